@@ -1,0 +1,117 @@
+#include "mesh/cluster.h"
+
+#include "core/errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace froth {
+namespace {
+
+std::string vertex_name(int v) { return "vertex " + std::to_string(v + 1); }
+std::string surface_name(int s) { return "surface " + std::to_string(s + 1); }
+
+// Builds CSR lists: start[k]..start[k+1] indexes list for key k.
+void build_csr(int n_keys, const std::vector<std::pair<int, int>>& pairs, std::vector<int>& start,
+               std::vector<int>& list) {
+    start.assign(n_keys + 1, 0);
+    for (auto [k, _] : pairs) ++start[k + 1];
+    for (int k = 0; k < n_keys; ++k) start[k + 1] += start[k];
+    list.resize(pairs.size());
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (auto [k, value] : pairs) list[fill[k]++] = value;
+}
+
+} // namespace
+
+Cluster::Cluster(ClusterSpec spec) {
+    check_spec(spec);
+    X_ = std::move(spec.vertices);
+    surfaces_.resize(spec.surfaces.size());
+    std::vector<std::pair<int, int>> vertex_surface;
+    for (std::size_t i = 0; i < spec.surfaces.size(); ++i) {
+        Surface& s = surfaces_[i];
+        s.triangles = std::move(spec.surfaces[i].triangles);
+        s.sigma = spec.surfaces[i].sigma;
+        for (const Tri& t : s.triangles) s.vertices.insert(s.vertices.end(), t.begin(), t.end());
+        std::sort(s.vertices.begin(), s.vertices.end());
+        s.vertices.erase(std::unique(s.vertices.begin(), s.vertices.end()), s.vertices.end());
+        for (int v : s.vertices) vertex_surface.emplace_back(v, static_cast<int>(i));
+        n_facets_ += static_cast<int>(s.triangles.size());
+    }
+    build_csr(n_vertices(), vertex_surface, vs_start_, vs_list_);
+    for (int v = 0; v < n_vertices(); ++v)
+        if (vs_start_[v] == vs_start_[v + 1])
+            throw TopologyError("cluster: " + vertex_name(v) + " is not a corner of any facet");
+
+    classify_edges();
+    build_triple_lines();
+    std::vector<std::pair<int, int>> vertex_edge;
+    for (int e = 0; e < static_cast<int>(junction_edges_.size()); ++e) {
+        vertex_edge.emplace_back(junction_edges_[e].a, e);
+        vertex_edge.emplace_back(junction_edges_[e].b, e);
+    }
+    build_csr(n_vertices(), vertex_edge, vj_start_, vj_list_);
+    orient_bodies(spec.bodies);
+}
+
+void Cluster::check_spec(const ClusterSpec& spec) const {
+    const int n = static_cast<int>(spec.vertices.size());
+    if (n == 0) throw InvalidInput("cluster: no vertices");
+    if (spec.surfaces.empty()) throw InvalidInput("cluster: no surfaces");
+    for (int v = 0; v < n; ++v)
+        if (!spec.vertices[v].allFinite())
+            throw InvalidInput("cluster: " + vertex_name(v) + " has a non-finite coordinate");
+    for (std::size_t i = 0; i < spec.surfaces.size(); ++i) {
+        const auto& s = spec.surfaces[i];
+        const std::string name = surface_name(static_cast<int>(i));
+        if (!(std::isfinite(s.sigma) && s.sigma > 0))
+            throw InvalidInput("cluster: " + name + " has sigma " + std::to_string(s.sigma) +
+                               "; sigma must be positive");
+        if (s.triangles.empty()) throw InvalidInput("cluster: " + name + " has no facets");
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const Tri& t = s.triangles[f];
+            const std::string where = name + " facet " + std::to_string(f + 1);
+            for (int v : t)
+                if (v < 0 || v >= n)
+                    throw InvalidInput("cluster: " + where + " names vertex " +
+                                       std::to_string(v + 1) + ", but there are " +
+                                       std::to_string(n) + " vertices");
+            if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+                throw TopologyError("cluster: " + where + " repeats a corner");
+            const Vec3 e1 = spec.vertices[t[1]] - spec.vertices[t[0]];
+            const Vec3 e2 = spec.vertices[t[2]] - spec.vertices[t[0]];
+            const double scale = std::max({e1.squaredNorm(), e2.squaredNorm(),
+                                           (e2 - e1).squaredNorm()});
+            if (e1.cross(e2).norm() <= 1e-12 * scale)
+                throw GeometryError("cluster: " + where + " (vertices " + std::to_string(t[0] + 1) +
+                                    ", " + std::to_string(t[1] + 1) + ", " +
+                                    std::to_string(t[2] + 1) + ") has zero area");
+        }
+    }
+}
+
+void Cluster::set_positions(std::vector<Vec3> X) {
+    if (X.size() != X_.size()) throw InvalidInput("set_positions: wrong number of vertices");
+    X_ = std::move(X);
+}
+
+void Cluster::set_sigma(int surface, double sigma) {
+    if (surface < 0 || surface >= n_surfaces())
+        throw InvalidInput("set_sigma: there is no surface " + std::to_string(surface + 1));
+    if (!(std::isfinite(sigma) && sigma > 0))
+        throw InvalidInput("set_sigma: " + surface_name(surface) + ": sigma must be positive, got " +
+                           std::to_string(sigma));
+    surfaces_[surface].sigma = sigma;
+}
+
+std::vector<int> Cluster::vertex_surfaces(int v) const {
+    return {vs_list_.begin() + vs_start_[v], vs_list_.begin() + vs_start_[v + 1]};
+}
+
+std::vector<int> Cluster::vertex_junction_edges(int v) const {
+    return {vj_list_.begin() + vj_start_[v], vj_list_.begin() + vj_start_[v + 1]};
+}
+
+} // namespace froth

@@ -1,0 +1,124 @@
+#pragma once
+/// The discrete surface cluster (numerics.md §1): one global vertex array shared by all surfaces
+/// at triple lines and quadruple points, surfaces as consistently oriented triangle lists, bodies
+/// as signed surface lists. Junction topology (triple-line edges, their orientation
+/// coefficients o^k, triple lines, quadruple points) is derived from the triangles, never entered.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace froth {
+
+using Vec3 = Eigen::Vector3d;
+using Tri = std::array<int, 3>;
+
+/// What a builder or a user hands to the engine. All ids are 0-based.
+struct ClusterSpec {
+    struct Surface {
+        std::vector<Tri> triangles; ///< vertex ids; one consistent orientation per surface
+        double sigma = 1.0;         ///< isotropic surface tension
+    };
+    std::vector<Vec3> vertices;
+    std::vector<Surface> surfaces;
+    /// Each body as the (unsigned) ids of the surfaces that enclose it; the engine finds the
+    /// signs so that every body is a closed, outward-oriented polyhedron.
+    std::vector<std::vector<int>> bodies;
+};
+
+/// A surface of the cluster.
+struct Surface {
+    std::vector<Tri> triangles;
+    double sigma = 1.0;
+    std::vector<int> vertices; ///< sorted global ids of the vertices of this surface
+};
+
+/// One (surface, sign) entry of a body: sign = +1 when the surface normal points out of the body.
+struct BodyFace {
+    int surface;
+    int sign;
+};
+
+struct Body {
+    std::vector<BodyFace> faces;
+};
+
+/// An edge shared by exactly three surfaces (seed Fig. 1). o[j] = +1 if the triangle of
+/// surfaces[j] at this edge traverses a -> b in its own vertex order, -1 if b -> a: then the
+/// pairs (o_j nu_j, mu_j) share one orientation about the edge, as (1.4c,d) require.
+struct JunctionEdge {
+    int a, b;
+    std::array<int, 3> surfaces;
+    std::array<int, 3> o;
+    std::array<int, 3> opposite; ///< the third corner of each surface's triangle at this edge
+    int line;                    ///< index into Cluster::triple_lines()
+};
+
+/// A chain of junction edges between quadruple points (or a closed loop).
+struct TripleLine {
+    std::vector<int> vertices; ///< ordered; for a closed line the first vertex is not repeated
+    bool closed = false;
+    std::array<int, 3> surfaces;
+};
+
+class Cluster {
+  public:
+    /// Validates the spec and derives the junction topology.
+    /// \throw InvalidInput, TopologyError or GeometryError naming the offending element; the
+    /// spec is consumed either way (no cluster exists after a throw).
+    explicit Cluster(ClusterSpec spec);
+
+    int n_vertices() const { return static_cast<int>(X_.size()); }
+    int n_surfaces() const { return static_cast<int>(surfaces_.size()); }
+    int n_facets() const { return n_facets_; }
+    int n_bodies() const { return static_cast<int>(bodies_.size()); }
+
+    const std::vector<Vec3>& positions() const { return X_; }
+    const Vec3& position(int v) const { return X_[v]; }
+    /// Replace all positions (same count); used by the time-stepping schemes.
+    void set_positions(std::vector<Vec3> X);
+
+    const std::vector<Surface>& surfaces() const { return surfaces_; }
+    const Surface& surface(int i) const { return surfaces_[i]; }
+    /// \throw InvalidInput unless sigma is finite and positive.
+    void set_sigma(int surface, double sigma);
+
+    const std::vector<Body>& bodies() const { return bodies_; }
+    const std::vector<JunctionEdge>& junction_edges() const { return junction_edges_; }
+    const std::vector<TripleLine>& triple_lines() const { return triple_lines_; }
+    /// Vertices where three or more triple lines meet (4 at a proper quadruple point).
+    const std::vector<int>& quadruple_points() const { return quadruple_points_; }
+
+    /// Surfaces that contain vertex v (sorted).
+    std::vector<int> vertex_surfaces(int v) const;
+    /// Junction edges at vertex v.
+    std::vector<int> vertex_junction_edges(int v) const;
+
+    /// Model time, advanced by the schemes.
+    double time() const { return time_; }
+    void set_time(double t) { time_ = t; }
+    /// Body volumes when the cluster was made: the reference for volume-loss reports.
+    const std::vector<double>& initial_volumes() const { return initial_volumes_; }
+
+  private:
+    void check_spec(const ClusterSpec& spec) const;
+    void classify_edges();
+    void build_triple_lines();
+    void orient_bodies(const std::vector<std::vector<int>>& body_surfaces);
+
+    std::vector<Vec3> X_;
+    std::vector<Surface> surfaces_;
+    std::vector<Body> bodies_;
+    std::vector<JunctionEdge> junction_edges_;
+    std::vector<TripleLine> triple_lines_;
+    std::vector<int> quadruple_points_;
+    // CSR incidence vertex -> surfaces and vertex -> junction edges
+    std::vector<int> vs_start_, vs_list_, vj_start_, vj_list_;
+    std::vector<double> initial_volumes_;
+    int n_facets_ = 0;
+    double time_ = 0.0;
+};
+
+} // namespace froth

@@ -1,0 +1,194 @@
+// Junction topology of a cluster, derived from the triangles alone (numerics.md §1):
+// an edge in 2 triangles of one surface is interior, in 3 surfaces a triple-junction edge; every
+// other count is an error. Bodies get their signs by propagating orientation across shared edges.
+
+#include "core/errors.h"
+#include "mesh/cluster.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <string>
+
+namespace froth {
+namespace {
+
+/// One triangle side: the undirected edge (lo, hi) seen from one facet.
+struct HalfEdge {
+    int lo, hi;
+    int surface, facet;
+    int dir;      ///< +1 if the facet traverses lo -> hi
+    int opposite; ///< the facet's third corner
+};
+
+std::vector<HalfEdge> collect_half_edges(const std::vector<Surface>& surfaces) {
+    std::vector<HalfEdge> h;
+    for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
+        const auto& tris = surfaces[s].triangles;
+        for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+            for (int k = 0; k < 3; ++k) {
+                const int a = tris[f][k], b = tris[f][(k + 1) % 3], c = tris[f][(k + 2) % 3];
+                h.push_back({std::min(a, b), std::max(a, b), s, f, a < b ? 1 : -1, c});
+            }
+    }
+    std::sort(h.begin(), h.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return std::tie(x.lo, x.hi, x.surface) < std::tie(y.lo, y.hi, y.surface);
+    });
+    return h;
+}
+
+std::string edge_name(int a, int b) {
+    return "edge " + std::to_string(a + 1) + "-" + std::to_string(b + 1);
+}
+
+double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)) / 6.0; }
+
+} // namespace
+
+void Cluster::classify_edges() {
+    const std::vector<HalfEdge> h = collect_half_edges(surfaces_);
+    for (std::size_t i = 0; i < h.size();) {
+        std::size_t j = i;
+        while (j < h.size() && h[j].lo == h[i].lo && h[j].hi == h[i].hi) ++j;
+        const int count = static_cast<int>(j - i);
+        const std::string edge = edge_name(h[i].lo, h[i].hi);
+        if (count == 1)
+            throw TopologyError("cluster: " + edge + " of surface " +
+                                std::to_string(h[i].surface + 1) +
+                                " is a free boundary edge (no external boundary is defined)");
+        if (count == 2) {
+            if (h[i].surface != h[i + 1].surface)
+                throw TopologyError("cluster: " + edge + " is shared by exactly two surfaces (" +
+                                    std::to_string(h[i].surface + 1) + " and " +
+                                    std::to_string(h[i + 1].surface + 1) +
+                                    "); a film split in two must be one surface");
+            if (h[i].dir == h[i + 1].dir)
+                throw TopologyError("cluster: surface " + std::to_string(h[i].surface + 1) +
+                                    " is not consistently oriented: facets " +
+                                    std::to_string(h[i].facet + 1) + " and " +
+                                    std::to_string(h[i + 1].facet + 1) + " both traverse " +
+                                    edge + " the same way");
+        } else if (count == 3) {
+            if (h[i].surface == h[i + 1].surface || h[i + 1].surface == h[i + 2].surface)
+                throw TopologyError("cluster: " + edge + " has three facets but only two surfaces"
+                                    " (surface " + std::to_string(h[i + 1].surface + 1) +
+                                    " folds onto itself there)");
+            JunctionEdge e{h[i].lo, h[i].hi, {}, {}, {}, -1};
+            for (int k = 0; k < 3; ++k) {
+                e.surfaces[k] = h[i + k].surface;
+                e.o[k] = h[i + k].dir;
+                e.opposite[k] = h[i + k].opposite;
+            }
+            junction_edges_.push_back(e);
+        } else {
+            throw TopologyError("cluster: " + edge + " is shared by " + std::to_string(count) +
+                                " facets; only triple junction lines (3 surfaces) are supported,"
+                                " not quadruple lines");
+        }
+        i = j;
+    }
+}
+
+void Cluster::build_triple_lines() {
+    const int n_edges = static_cast<int>(junction_edges_.size());
+    std::vector<std::vector<int>> at(n_vertices());
+    for (int e = 0; e < n_edges; ++e) {
+        at[junction_edges_[e].a].push_back(e);
+        at[junction_edges_[e].b].push_back(e);
+    }
+    // A line continues through a vertex with exactly two junction edges of the same surfaces.
+    auto passes = [&](int v) {
+        return at[v].size() == 2 &&
+               junction_edges_[at[v][0]].surfaces == junction_edges_[at[v][1]].surfaces;
+    };
+    auto walk = [&](int start_vertex, int start_edge) {
+        TripleLine line;
+        line.surfaces = junction_edges_[start_edge].surfaces;
+        const int id = static_cast<int>(triple_lines_.size());
+        int v = start_vertex, e = start_edge;
+        line.vertices.push_back(v);
+        while (e >= 0 && junction_edges_[e].line < 0) {
+            junction_edges_[e].line = id;
+            v = junction_edges_[e].a == v ? junction_edges_[e].b : junction_edges_[e].a;
+            if (v == start_vertex) {
+                line.closed = true;
+                break;
+            }
+            line.vertices.push_back(v);
+            e = passes(v) ? (at[v][0] == e ? at[v][1] : at[v][0]) : -1;
+        }
+        triple_lines_.push_back(std::move(line));
+    };
+    for (int v = 0; v < n_vertices(); ++v)
+        if (!at[v].empty() && !passes(v))
+            for (int e : at[v])
+                if (junction_edges_[e].line < 0) walk(v, e);
+    for (int e = 0; e < n_edges; ++e) // what is left are closed loops
+        if (junction_edges_[e].line < 0) walk(junction_edges_[e].a, e);
+    for (int v = 0; v < n_vertices(); ++v)
+        if (at[v].size() >= 3) quadruple_points_.push_back(v);
+}
+
+void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) {
+    const std::vector<HalfEdge> h = collect_half_edges(surfaces_);
+    for (std::size_t b = 0; b < body_surfaces.size(); ++b) {
+        const std::string name = "body " + std::to_string(b + 1);
+        std::map<int, int> sign; // surface -> sign, 0 = not yet known
+        for (int s : body_surfaces[b]) {
+            if (s < 0 || s >= n_surfaces())
+                throw InvalidInput("cluster: " + name + " names surface " + std::to_string(s + 1) +
+                                   ", but there are " + std::to_string(n_surfaces()) + " surfaces");
+            if (!sign.emplace(s, 0).second)
+                throw InvalidInput("cluster: " + name + " names surface " + std::to_string(s + 1) +
+                                   " twice");
+        }
+        if (sign.empty()) throw InvalidInput("cluster: " + name + " has no surfaces");
+        // Edges of the body with the half-edges of its own surfaces: each must appear twice.
+        std::vector<std::pair<const HalfEdge*, const HalfEdge*>> links;
+        for (std::size_t i = 0; i < h.size();) {
+            std::size_t j = i;
+            std::vector<const HalfEdge*> mine;
+            for (; j < h.size() && h[j].lo == h[i].lo && h[j].hi == h[i].hi; ++j)
+                if (sign.count(h[j].surface)) mine.push_back(&h[j]);
+            if (!mine.empty() && mine.size() != 2)
+                throw TopologyError("cluster: " + name + " is not closed: " +
+                                    edge_name(h[i].lo, h[i].hi) + " is in " +
+                                    std::to_string(mine.size()) + " of its facets, not 2");
+            if (mine.size() == 2 && mine[0]->surface != mine[1]->surface)
+                links.emplace_back(mine[0], mine[1]);
+            i = j;
+        }
+        // Propagate: across a shared edge the two signed facets must traverse it oppositely.
+        for (auto& [s, sg] : sign) {
+            if (sg != 0) continue;
+            sg = 1;
+            for (bool changed = true; changed;) {
+                changed = false;
+                for (auto [p, q] : links) {
+                    int& sp = sign[p->surface];
+                    int& sq = sign[q->surface];
+                    if (sp != 0 && sq == 0) sq = -sp * p->dir * q->dir, changed = true;
+                    if (sq != 0 && sp == 0) sp = -sq * p->dir * q->dir, changed = true;
+                    if (sp != 0 && sq != 0 && sp * p->dir == sq * q->dir)
+                        throw TopologyError("cluster: " + name + " cannot be oriented: its "
+                                            "surfaces " + std::to_string(p->surface + 1) + " and " +
+                                            std::to_string(q->surface + 1) + " disagree at " +
+                                            edge_name(p->lo, p->hi));
+                }
+            }
+        }
+        Body body;
+        double volume = 0;
+        for (auto [s, sg] : sign) {
+            body.faces.push_back({s, sg});
+            for (const Tri& t : surfaces_[s].triangles)
+                volume += sg * cone_volume(X_[t[0]], X_[t[1]], X_[t[2]]);
+        }
+        if (volume < 0)
+            for (BodyFace& f : body.faces) f.sign = -f.sign;
+        bodies_.push_back(std::move(body));
+        initial_volumes_.push_back(std::abs(volume));
+    }
+}
+
+} // namespace froth
