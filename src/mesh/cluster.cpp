@@ -39,6 +39,8 @@ Cluster::Cluster(ClusterSpec spec) {
         s.vertices.erase(std::unique(s.vertices.begin(), s.vertices.end()), s.vertices.end());
         for (int v : s.vertices) vertex_surface.emplace_back(v, static_cast<int>(i));
         n_facets_ += static_cast<int>(s.triangles.size());
+        for (const Tri& t : s.triangles)
+            initial_area_ += 0.5 * (X_[t[1]] - X_[t[0]]).cross(X_[t[2]] - X_[t[0]]).norm();
     }
     build_csr(n_vertices(), vertex_surface, vs_start_, vs_list_);
     for (int v = 0; v < n_vertices(); ++v)
@@ -108,6 +110,12 @@ void Cluster::set_sigma(int surface, double sigma) {
 
 std::vector<int> Cluster::vertex_surfaces(int v) const {
     return {vs_list_.begin() + vs_start_[v], vs_list_.begin() + vs_start_[v + 1]};
+}
+
+int Cluster::pair_index(int v, int s) const {
+    for (int k = vs_start_[v]; k < vs_start_[v + 1]; ++k)
+        if (vs_list_[k] == s) return k;
+    return -1;
 }
 
 std::vector<int> Cluster::vertex_junction_edges(int v) const {

@@ -5,6 +5,7 @@
 /// coefficients o^k, triple lines, quadruple points) is derived from the triangles, never entered.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross products
 
 #include <array>
 #include <string>
@@ -93,6 +94,15 @@ class Cluster {
 
     /// Surfaces that contain vertex v (sorted).
     std::vector<int> vertex_surfaces(int v) const;
+
+    /// The (surface, vertex) pairs in vertex-major order, surfaces sorted within a vertex: pair k
+    /// belongs to vertex v for pair_begin(v) <= k < pair_begin(v + 1). They number the
+    /// per-surface unknowns (kappa_iv) of the schemes.
+    int n_pairs() const { return static_cast<int>(vs_list_.size()); }
+    int pair_begin(int v) const { return vs_start_[v]; }
+    int pair_surface(int k) const { return vs_list_[k]; }
+    /// The pair of (surface s, vertex v), or -1 if s does not contain v.
+    int pair_index(int v, int s) const;
     /// Junction edges at vertex v.
     std::vector<int> vertex_junction_edges(int v) const;
 
@@ -101,6 +111,8 @@ class Cluster {
     void set_time(double t) { time_ = t; }
     /// Body volumes when the cluster was made: the reference for volume-loss reports.
     const std::vector<double>& initial_volumes() const { return initial_volumes_; }
+    /// Total facet area when the cluster was made: a length scale for degeneracy checks.
+    double initial_area() const { return initial_area_; }
 
   private:
     void check_spec(const ClusterSpec& spec) const;
@@ -117,6 +129,7 @@ class Cluster {
     // CSR incidence vertex -> surfaces and vertex -> junction edges
     std::vector<int> vs_start_, vs_list_, vj_start_, vj_list_;
     std::vector<double> initial_volumes_;
+    double initial_area_ = 0;
     int n_facets_ = 0;
     double time_ = 0.0;
 };

@@ -1,0 +1,98 @@
+#include "assembly/flow_systems.h"
+
+namespace froth {
+
+Eigen::Matrix3d local_stiffness(const Vec3& x0, const Vec3& x1, const Vec3& x2) {
+    const Vec3 e[3] = {x2 - x1, x0 - x2, x1 - x0};
+    const double four_area = 2.0 * (x1 - x0).cross(x2 - x0).norm();
+    Eigen::Matrix3d K;
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) K(a, b) = e[a].dot(e[b]) / four_area;
+    return K;
+}
+
+namespace {
+
+/// Calls f(surface, triangle, K) with the local stiffness of every facet.
+template <class F> void for_each_facet(const Cluster& c, F&& f) {
+    const auto& X = c.positions();
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles)
+            f(i, t, local_stiffness(X[t[0]], X[t[1]], X[t[2]]));
+}
+
+/// The sigma-weighted vector stiffness A into the position block, which starts at (0, 0).
+void add_position_stiffness(const Cluster& c, SparseBuilder& M) {
+    for_each_facet(c, [&](int i, const Tri& t, const Eigen::Matrix3d& K) {
+        const double sigma = c.surface(i).sigma;
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                for (int d = 0; d < 3; ++d) M.add(3 * t[a] + d, 3 * t[b] + d, sigma * K(a, b));
+    });
+}
+
+void set_minus_AX(const Cluster& c, Eigen::VectorXd& rhs) {
+    const Eigen::VectorXd AX = apply_stiffness(c, c.positions());
+    rhs.head(AX.size()) = -AX;
+}
+
+} // namespace
+
+Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X) {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(3 * c.n_vertices());
+    for_each_facet(c, [&](int i, const Tri& t, const Eigen::Matrix3d& K) {
+        const double sigma = c.surface(i).sigma;
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) y.segment<3>(3 * t[a]) += sigma * K(a, b) * X[t[b]];
+    });
+    return y;
+}
+
+void assemble_mcf(const Cluster& c, const PairGeometry& g, double tau, SparseBuilder& M,
+                  Eigen::VectorXd& rhs) {
+    const int n = 3 * c.n_vertices();
+    M.begin(n, n);
+    add_position_stiffness(c, M);
+    // (4.6b): kappa_iv = omega_iv . dX_v / tau, so (3.5b) gains m_iv omega_iv omega_iv^T / tau.
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
+        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
+            B += g.mass[k] * g.omega[k] * g.omega[k].transpose();
+        for (int r = 0; r < 3; ++r)
+            for (int s = 0; s < 3; ++s) M.add(3 * v + r, 3 * v + s, B(r, s) / tau);
+    }
+    M.finish();
+    rhs.resize(n);
+    set_minus_AX(c, rhs);
+}
+
+void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z, double tau,
+                 SparseBuilder& M, Eigen::VectorXd& rhs) {
+    const int n = 3 * c.n_vertices(), size = n + Z.n_reduced;
+    M.begin(size, size);
+    add_position_stiffness(c, M);
+    // -tau Z^T A_s Z: the scalar stiffness of each surface on its kappa pairs, through Z. (3.6a)
+    for_each_facet(c, [&](int i, const Tri& t, const Eigen::Matrix3d& K) {
+        int p[3];
+        for (int a = 0; a < 3; ++a) p[a] = c.pair_index(t[a], i);
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                for (int x = Z.start[p[a]]; x < Z.start[p[a] + 1]; ++x)
+                    for (int y = Z.start[p[b]]; y < Z.start[p[b] + 1]; ++y)
+                        M.add(n + Z.col[x], n + Z.col[y], -tau * K(a, b) * Z.val[x] * Z.val[y]);
+    });
+    // N Z and its transpose: <kappa nu, eta>^h = m_iv kappa_iv omega_iv . eta_v (3.6b).
+    for (int v = 0; v < c.n_vertices(); ++v)
+        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
+            for (int x = Z.start[k]; x < Z.start[k + 1]; ++x)
+                for (int d = 0; d < 3; ++d) {
+                    const double value = g.mass[k] * g.omega[k][d] * Z.val[x];
+                    M.add(3 * v + d, n + Z.col[x], value);
+                    M.add(n + Z.col[x], 3 * v + d, value);
+                }
+    M.finish();
+    rhs = Eigen::VectorXd::Zero(size);
+    set_minus_AX(c, rhs);
+}
+
+} // namespace froth

@@ -1,0 +1,140 @@
+#include "geometry/geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace froth {
+
+std::vector<double> surface_areas(const Cluster& c) {
+    std::vector<double> areas(c.n_surfaces(), 0.0);
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles)
+            areas[i] += 0.5 * area_vector2(c.positions(), t).norm();
+    return areas;
+}
+
+double energy(const Cluster& c) {
+    const std::vector<double> areas = surface_areas(c);
+    double e = 0;
+    for (int i = 0; i < c.n_surfaces(); ++i) e += c.surface(i).sigma * areas[i];
+    return e;
+}
+
+std::vector<double> body_volumes(const Cluster& c) {
+    const auto& X = c.positions();
+    std::vector<double> volumes;
+    for (const Body& b : c.bodies()) {
+        double v = 0;
+        for (const BodyFace& f : b.faces)
+            for (const Tri& t : c.surface(f.surface).triangles)
+                v += f.sign * X[t[0]].dot(X[t[1]].cross(X[t[2]])) / 6.0;
+        volumes.push_back(v);
+    }
+    return volumes;
+}
+
+double max_volume_loss(const Cluster& c, const std::vector<double>& volumes) {
+    double loss = 0;
+    for (std::size_t b = 0; b < volumes.size(); ++b) {
+        const double v0 = c.initial_volumes()[b];
+        loss = std::max(loss, std::abs(volumes[b] - v0) / v0);
+    }
+    return loss;
+}
+
+PairGeometry pair_geometry(const Cluster& c) {
+    PairGeometry g;
+    g.mass.assign(c.n_pairs(), 0.0);
+    g.omega.assign(c.n_pairs(), Vec3::Zero());
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles) {
+            const Vec3 a2 = area_vector2(c.positions(), t); // 2 |sigma| nu_sigma
+            const double area = 0.5 * a2.norm();
+            for (int v : t) {
+                const int k = c.pair_index(v, i);
+                g.mass[k] += area / 3.0;
+                g.omega[k] += 0.5 * a2;
+            }
+        }
+    for (int k = 0; k < c.n_pairs(); ++k) g.omega[k] /= 3.0 * g.mass[k];
+    return g;
+}
+
+AngleStats triple_line_angles(const Cluster& c) {
+    const auto& X = c.positions();
+    AngleStats s;
+    s.min = 360;
+    double sum = 0;
+    for (const JunctionEdge& e : c.junction_edges()) {
+        const Vec3 t = (X[e.b] - X[e.a]).normalized();
+        Vec3 mu[3]; // outward conormal of each film's facet at the edge
+        for (int j = 0; j < 3; ++j) {
+            const Vec3 d = X[e.a] - X[e.opposite[j]];
+            mu[j] = (d - d.dot(t) * t).normalized();
+        }
+        for (int j = 0; j < 3; ++j) {
+            const double cosine = std::clamp(mu[j].dot(mu[(j + 1) % 3]), -1.0, 1.0);
+            const double angle = std::acos(cosine) * 180.0 / M_PI;
+            s.min = std::min(s.min, angle);
+            s.max = std::max(s.max, angle);
+            sum += angle;
+            ++s.count;
+        }
+    }
+    s.mean = s.count ? sum / s.count : 0;
+    if (!s.count) s.min = 0;
+    return s;
+}
+
+MeshQuality mesh_quality(const Cluster& c) {
+    const auto& X = c.positions();
+    MeshQuality q;
+    q.min_angle = 180;
+    q.min_area = INFINITY;
+    for (const Surface& s : c.surfaces())
+        for (const Tri& t : s.triangles) {
+            double len[3];
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 u = X[t[(k + 1) % 3]] - X[t[k]];
+                const Vec3 w = X[t[(k + 2) % 3]] - X[t[k]];
+                const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
+                q.min_angle = std::min(q.min_angle, angle);
+                q.max_angle = std::max(q.max_angle, angle);
+                len[k] = u.norm();
+            }
+            const auto [lo, hi] = std::minmax({len[0], len[1], len[2]});
+            q.max_edge_ratio = std::max(q.max_edge_ratio, hi / lo);
+            q.min_area = std::min(q.min_area, 0.5 * area_vector2(X, t).norm());
+        }
+    return q;
+}
+
+std::vector<double> vertex_mean_curvature(const Cluster& c) {
+    // The area gradient at a vertex is the discrete mean curvature vector times its mass:
+    // d|sigma|/dx_a = 1/2 nu x (x_c - x_b) for the facet (a, b, c).
+    const auto& X = c.positions();
+    std::vector<Vec3> grad(c.n_vertices(), Vec3::Zero()), normal(c.n_vertices(), Vec3::Zero());
+    std::vector<double> mass(c.n_vertices(), 0.0);
+    std::vector<int> owner(c.n_vertices(), -1);
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (int v : c.surface(i).vertices)
+            if (owner[v] < 0) owner[v] = i;
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles) {
+            const Vec3 a2 = area_vector2(X, t);
+            const Vec3 nu = a2.normalized();
+            for (int k = 0; k < 3; ++k) {
+                const int v = t[k];
+                if (owner[v] != i) continue;
+                grad[v] += 0.5 * nu.cross(X[t[(k + 2) % 3]] - X[t[(k + 1) % 3]]);
+                normal[v] += 0.5 * a2;
+                mass[v] += a2.norm() / 6.0;
+            }
+        }
+    std::vector<double> H(c.n_vertices(), 0.0);
+    for (int v = 0; v < c.n_vertices(); ++v)
+        if (mass[v] > 0) H[v] = grad[v].dot(normal[v].normalized()) / mass[v];
+    return H;
+}
+
+} // namespace froth

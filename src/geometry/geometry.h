@@ -1,0 +1,53 @@
+#pragma once
+/// Geometric quantities of a cluster on its current positions: facet areas and normals,
+/// energy, body volumes, lumped masses and weighted normals (numerics.md §2), junction angles
+/// and mesh quality. Free functions; nothing is cached.
+
+#include "mesh/cluster.h"
+
+#include <vector>
+
+namespace froth {
+
+/// Twice the area vector of triangle t: (x1 - x0) x (x2 - x0).
+inline Vec3 area_vector2(const std::vector<Vec3>& X, const Tri& t) {
+    return (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]);
+}
+
+/// |Gamma_i| for every surface i.
+std::vector<double> surface_areas(const Cluster& c);
+/// E = sum_i sigma_i |Gamma_i| (seed (1.5) with tensions).
+double energy(const Cluster& c);
+/// Body volumes by the divergence theorem, exact for closed polyhedra (numerics.md §1).
+std::vector<double> body_volumes(const Cluster& c);
+/// max_b |V_b - V_b(0)| / V_b(0); 0 for a cluster without bodies.
+double max_volume_loss(const Cluster& c, const std::vector<double>& volumes);
+
+/// Per (surface, vertex) pair (Cluster::pair_*): lumped mass m_iv = 1/3 sum |sigma| and the
+/// area-weighted normal omega_iv = sum |sigma| nu_sigma / sum |sigma| (not normalised).
+struct PairGeometry {
+    std::vector<double> mass;
+    std::vector<Vec3> omega;
+};
+PairGeometry pair_geometry(const Cluster& c);
+
+struct AngleStats {
+    double min = 0, max = 0, mean = 0; ///< degrees
+    int count = 0;
+};
+/// Angles between the films at every triple-junction edge, measured between the conormals of
+/// the three facets at the edge (three angles per edge, summing to 360 degrees).
+AngleStats triple_line_angles(const Cluster& c);
+
+struct MeshQuality {
+    double min_angle = 0, max_angle = 0; ///< facet corner angles, degrees
+    double max_edge_ratio = 0;           ///< longest / shortest edge within a facet
+    double min_area = 0;                 ///< smallest facet area
+};
+MeshQuality mesh_quality(const Cluster& c);
+
+/// Sum of principal curvatures per vertex (positive on a sphere with outward normals), from
+/// the discrete Laplacian of the surface with the lowest id at that vertex. For output only.
+std::vector<double> vertex_mean_curvature(const Cluster& c);
+
+} // namespace froth

@@ -1,0 +1,86 @@
+#include "run/evolve.h"
+
+#include "core/errors.h"
+#include "core/interrupt.h"
+#include "io/vtk_writer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+namespace froth {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void check_options(const EvolveOptions& o) {
+    if (!(std::isfinite(o.tau) && o.tau > 0))
+        throw InvalidInput("evolve: tau must be positive and finite, got " + std::to_string(o.tau));
+    const bool has_T = o.duration >= 0, has_steps = o.steps >= 0;
+    if (has_T == has_steps) throw InvalidInput("evolve: give exactly one of T and steps");
+    if (has_T && !(std::isfinite(o.duration) && o.duration > 0))
+        throw InvalidInput("evolve: T must be positive and finite");
+    if (o.every < 0) throw InvalidInput("evolve: every must be >= 0");
+}
+
+std::vector<PointField> output_fields(const Cluster& c) {
+    return {{"mean_curvature", vertex_mean_curvature(c)}};
+}
+
+void draw_progress(std::FILE* out, const EvolveResult& r, const StepReport& s, double fraction) {
+    std::fprintf(out, "\r  step %6d  t = %-10.5g  energy = %-12.8g  volume loss = %8.2e  %5.1f%%  ",
+                 r.steps, s.t, s.energy, s.volume_loss, 100.0 * fraction);
+    std::fflush(out);
+}
+
+} // namespace
+
+EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
+    check_options(o);
+    const auto start = Clock::now();
+    const double t_end = c.time() + o.duration;
+    const int total = o.steps >= 0 ? o.steps : static_cast<int>(std::ceil(o.duration / o.tau - 1e-9));
+    std::unique_ptr<PvdSeries> series;
+    if (!o.output.empty()) {
+        series = std::make_unique<PvdSeries>(o.output);
+        series->add(c.time(), c, output_fields(c));
+    }
+    EvolveResult r;
+    r.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
+    auto last_draw = Clock::now();
+    bool written_last = true;
+    while (r.steps < total) {
+        if (consume_interrupt()) {
+            r.stop_reason = "interrupted";
+            break;
+        }
+        double tau = o.tau;
+        if (o.steps < 0) tau = std::min(tau, t_end - c.time());
+        const StepReport s = stepper.step(c, o.flow, tau);
+        ++r.steps;
+        r.solve_seconds += s.solve_seconds;
+        r.max_energy_increase = std::max(r.max_energy_increase,
+                                         (s.energy - s.energy_before) / s.energy_before);
+        written_last = false;
+        if (series && o.every > 0 && r.steps % o.every == 0) {
+            series->add(c.time(), c, output_fields(c));
+            written_last = true;
+        }
+        if (o.progress && std::chrono::duration<double>(Clock::now() - last_draw).count() > 0.25) {
+            draw_progress(o.progress, r, s, static_cast<double>(r.steps) / total);
+            last_draw = Clock::now();
+        }
+        if (o.on_step && !o.on_step(s)) {
+            r.stop_reason = "on_step";
+            break;
+        }
+    }
+    if (series && !written_last) series->add(c.time(), c, output_fields(c));
+    if (o.progress) std::fprintf(o.progress, "\r%90s\r", ""), std::fflush(o.progress);
+    r.last = make_report(c);
+    r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return r;
+}
+
+} // namespace froth

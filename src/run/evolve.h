@@ -1,0 +1,38 @@
+#pragma once
+/// Evolutions: many steps of one flow with output, progress and a user callback. This is the
+/// driver layer above the schemes (flows/) and the writers (io/); it never sees Lua.
+
+#include "flows/stepper.h"
+
+#include <cstdio>
+#include <functional>
+#include <string>
+
+namespace froth {
+
+struct EvolveOptions {
+    Flow flow = Flow::SurfaceDiffusion;
+    double tau = 0;
+    double duration = -1;  ///< evolve for this model time (T); the last step is shortened to hit it
+    int steps = -1;        ///< or for this many steps (exactly one of duration/steps is set)
+    int every = 0;         ///< write a snapshot every `every` steps (0: first and last only)
+    std::string output;    ///< ".pvd" path of a ParaView series; empty: no output
+    std::FILE* progress = nullptr; ///< a terminal to draw a progress line on, or nullptr
+    /// Called after every step; returning false stops the evolution.
+    std::function<bool(const StepReport&)> on_step;
+};
+
+struct EvolveResult {
+    int steps = 0;
+    Report last;                     ///< the state at the end
+    double wall_seconds = 0;
+    double solve_seconds = 0;        ///< summed over the steps
+    double max_energy_increase = 0;  ///< largest relative energy increase of any step (0 if none)
+    std::string stop_reason;         ///< "T reached", "steps done", "on_step", "interrupted"
+};
+
+/// \throw InvalidInput for bad options; errors of a step propagate (TimeStepper::step), and the
+/// cluster then holds the state after the last successful step.
+EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& options);
+
+} // namespace froth

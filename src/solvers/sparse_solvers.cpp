@@ -1,0 +1,66 @@
+#include "solvers/sparse_solvers.h"
+
+#include "core/errors.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+
+namespace froth {
+namespace {
+
+void check_finite(const SparseMatrix& A, const char* who) {
+    for (int k = 0; k < A.nonZeros(); ++k)
+        if (!std::isfinite(A.valuePtr()[k]))
+            throw SolverError(std::string(who) + ": the system matrix has non-finite entries");
+}
+
+} // namespace
+
+struct SpdSolver::Impl {
+    Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
+};
+
+SpdSolver::SpdSolver() : impl_(std::make_unique<Impl>()) {
+    impl_->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
+}
+SpdSolver::~SpdSolver() = default;
+
+void SpdSolver::analyze(const SparseMatrix& A) {
+    impl_->llt.analyzePattern(A);
+    analyzed_ = true;
+}
+
+void SpdSolver::factorize(const SparseMatrix& A) {
+    check_finite(A, "cholesky");
+    impl_->llt.factorize(A);
+    if (impl_->llt.info() != Eigen::Success)
+        throw SolverError("cholesky: the system matrix is not positive definite "
+                          "(degenerate facets or a violated assumption (A) of the seed)");
+}
+
+Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& b) const { return impl_->llt.solve(b); }
+
+struct LuSolver::Impl {
+    Eigen::UmfPackLU<SparseMatrix> lu;
+};
+
+LuSolver::LuSolver() : impl_(std::make_unique<Impl>()) {}
+LuSolver::~LuSolver() = default;
+
+void LuSolver::analyze(const SparseMatrix& A) {
+    impl_->lu.analyzePattern(A);
+    if (impl_->lu.info() != Eigen::Success) throw SolverError("lu: symbolic analysis failed");
+    analyzed_ = true;
+}
+
+void LuSolver::factorize(const SparseMatrix& A) {
+    check_finite(A, "lu");
+    impl_->lu.factorize(A);
+    if (impl_->lu.info() != Eigen::Success)
+        throw SolverError("lu: the system matrix is singular (degenerate facets or a violated "
+                          "assumption (A) of the seed)");
+}
+
+Eigen::VectorXd LuSolver::solve(const Eigen::VectorXd& b) const { return impl_->lu.solve(b); }
+
+} // namespace froth
