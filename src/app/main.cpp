@@ -48,7 +48,7 @@ void print_usage(std::FILE* out) {
         "  -W        turn warnings on\n"
         "  --        stop handling options\n"
         "  -         stop handling options and execute stdin\n"
-        "  --help    show this help and exit\n"
+        "  --help    show this help and exit (also -h)\n"
         "  --version show version information and exit\n"
         "With no script and no -e, froth reads stdin: a REPL on a terminal, else a chunk.\n"
         "The Lua API (the global 'froth' table) is described in docs/lua_api.md.\n",
