@@ -1,0 +1,44 @@
+#pragma once
+/// Cluster specs from gmsh (docs: ../shared/docs/dependencies.md §3): the OCC double bubble,
+/// a single sphere, and any MSH file. gmsh itself stays private to the .cpp, so including this
+/// header needs no gmsh. gmsh is a process-wide singleton: the builders serialise on a mutex.
+
+#include "mesh/cluster.h"
+
+#include <array>
+#include <string>
+
+namespace froth {
+
+struct DoubleBubbleOptions {
+    double h = 0.08;    ///< target edge length (Mesh.MeshSizeMax), 0.005 <= h <= 0.5
+    double split = 0.0; ///< height of the flat wall, |split| <= 0.9
+    std::array<double, 3> sigma{1, 1, 1}; ///< tensions of surfaces 1, 2, 3 (see below)
+};
+
+/// The unit ball cut by the plane z = split, meshed conformingly.
+/// Surface 1 = lower cap (z < split), surface 2 = upper cap (z > split), surface 3 = the flat
+/// wall. Body 1 = lower bubble {1, 3}, body 2 = upper bubble {2, 3}. About 3000 vertices at
+/// h = 0.08. \throw InvalidInput for bad options, GeometryError if gmsh fails.
+ClusterSpec build_double_bubble(const DoubleBubbleOptions& options);
+
+struct SphereOptions {
+    double R = 1.0; ///< radius, > 0
+    double h = 0.1; ///< target edge length, 0.005 R <= h <= R
+    Vec3 center = Vec3::Zero();
+};
+
+/// One spherical surface (sigma 1) enclosing one body.
+/// \throw InvalidInput for bad options, GeometryError if gmsh fails.
+ClusterSpec build_sphere(const SphereOptions& options);
+
+/// Reads any mesh file gmsh can open (MSH 2/4 ...). Only 3-node triangles are used.
+/// Surfaces: the physical surfaces in order of physical tag (all their entities merged into one
+/// consistently oriented surface), or, if there are none, each surface entity with triangles in
+/// order of entity tag. Bodies: the physical volumes in order of tag (or, if none, each volume
+/// entity); a body's surfaces are those holding an entity on the boundary of its volumes.
+/// Sigma is 1 everywhere. \throw IoError if the file is missing, malformed or has no
+/// triangles; TopologyError if a merged surface cannot be oriented consistently.
+ClusterSpec read_msh(const std::string& path);
+
+} // namespace froth
