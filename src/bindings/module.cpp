@@ -1,13 +1,40 @@
 #include "bindings/froth_lua.h"
 
+#include "bindings/lua_builders.h"
+#include "bindings/lua_cluster.h"
+
 #include <lua.hpp>
+
+#include <cstdlib>
+#include <string>
 
 namespace froth::lua {
 
 const char* version() { return FROTH_VERSION; }
 
+namespace {
+
+/// Puts froth's own Lua modules first on package.path: $FROTH_LUA_DIR if set, else the source
+/// tree's lua/ folder this binary was built from.
+void add_lua_path(lua_State* L) {
+    const char* env = std::getenv("FROTH_LUA_DIR");
+    const std::string dir = env && *env ? env : FROTH_LUA_DIR;
+    lua_getglobal(L, "package");
+    lua_getfield(L, -1, "path");
+    const std::string path = dir + "/?.lua;" + dir + "/?/init.lua;" + lua_tostring(L, -1);
+    lua_pop(L, 1);
+    lua_pushstring(L, path.c_str());
+    lua_setfield(L, -2, "path");
+    lua_pop(L, 1);
+}
+
+} // namespace
+
 void open_froth(lua_State* L) {
+    register_cluster_type(L);
+    add_lua_path(L);
     lua_newtable(L);
+    add_builders(L);
     lua_pushstring(L, FROTH_VERSION);
     lua_setfield(L, -2, "version");
     lua_pushvalue(L, -1);

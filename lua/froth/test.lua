@@ -1,0 +1,49 @@
+-- froth.test: the few helpers our Lua tests need (cf. Lua's testes/errors.lua checkerr).
+--   local T = require("froth.test")
+--   T.check_error("tau must be positive", c.step, c, {flow = "sd", tau = 0})
+--   T.assert_near(x, 1.0, 1e-12, "what x is")
+--   T.summary()   -- prints "N passed, 0 failed" and exits non-zero on failures
+local M = {passed = 0, failed = 0}
+
+local function report(ok, what, detail)
+  if ok then
+    M.passed = M.passed + 1
+  else
+    M.failed = M.failed + 1
+    io.stderr:write("FAIL: ", what, detail and (": " .. detail) or "", "\n",
+                    debug.traceback("", 3), "\n")
+  end
+  return ok
+end
+
+--- Passes if f(...) raises an error whose message contains `text` (plain search).
+function M.check_error(text, f, ...)
+  local ok, msg = pcall(f, ...)
+  if ok then return report(false, "expected an error containing '" .. text .. "'", "no error") end
+  msg = tostring(msg)
+  return report(msg:find(text, 1, true) ~= nil, "error message", "'" .. msg ..
+                "' does not contain '" .. text .. "'")
+end
+
+function M.assert_near(actual, expected, tol, what)
+  local ok = type(actual) == "number" and math.abs(actual - expected) <= tol
+  return report(ok, what or "value", ("%s, expected %s within %g"):format(tostring(actual),
+                tostring(expected), tol))
+end
+
+function M.assert_true(cond, what, detail)
+  return report(cond and true or false, what or "condition", detail)
+end
+
+function M.assert_equal(actual, expected, what)
+  return report(actual == expected, what or "value",
+                ("%s, expected %s"):format(tostring(actual), tostring(expected)))
+end
+
+--- Prints the closing line ctest and CI read, and exits 1 if anything failed.
+function M.summary()
+  print(("%d passed, %d failed"):format(M.passed, M.failed))
+  if M.failed > 0 then os.exit(1) end
+end
+
+return M

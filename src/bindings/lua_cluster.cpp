@@ -1,0 +1,291 @@
+// froth.Cluster methods: check arguments, call the engine, push results. Ids are 1-based here
+// and 0-based in the engine; the conversion happens only in this file.
+#include "bindings/lua_cluster.h"
+
+#include "bindings/luax.h"
+#include "io/write.h"
+#include "run/evolve.h"
+
+#include <unistd.h>
+
+namespace froth::lua {
+namespace {
+
+ClusterHandle& self(lua_State* L) { return check<ClusterHandle>(L, 1, kClusterType); }
+
+int check_surface(lua_State* L, int idx, const Cluster& c) {
+    const lua_Integer i = luaL_checkinteger(L, idx);
+    if (i < 1 || i > c.n_surfaces())
+        luaL_error(L, "surface %d does not exist (the cluster has surfaces 1..%d)",
+                   static_cast<int>(i), c.n_surfaces());
+    return static_cast<int>(i - 1);
+}
+
+int l_info(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    lua_createtable(L, 0, 6);
+    set_integer(L, "vertices", c.n_vertices());
+    set_integer(L, "facets", c.n_facets());
+    set_integer(L, "surfaces", c.n_surfaces());
+    set_integer(L, "triple_lines", static_cast<long long>(c.triple_lines().size()));
+    set_integer(L, "quadruple_points", static_cast<long long>(c.quadruple_points().size()));
+    set_integer(L, "bodies", c.n_bodies());
+    return 1;
+}
+
+int l_energy(lua_State* L) {
+    lua_pushnumber(L, energy(self(L).cluster));
+    return 1;
+}
+
+int l_area(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    const std::vector<double> areas = surface_areas(c);
+    if (lua_isnoneornil(L, 2)) {
+        double total = 0;
+        for (double a : areas) total += a;
+        lua_pushnumber(L, total);
+    } else {
+        lua_pushnumber(L, areas[check_surface(L, 2, c)]);
+    }
+    return 1;
+}
+
+int l_volumes(lua_State* L) {
+    push_numbers(L, body_volumes(self(L).cluster));
+    return 1;
+}
+
+int l_sigma(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    lua_pushnumber(L, c.surface(check_surface(L, 2, c)).sigma);
+    return 1;
+}
+
+int l_set_sigma(lua_State* L) {
+    Cluster& c = self(L).cluster;
+    const int s = check_surface(L, 2, c);
+    const double value = luaL_checknumber(L, 3);
+    return guarded(L, [&] {
+        c.set_sigma(s, value);
+        return 0;
+    });
+}
+
+int l_time(lua_State* L) {
+    lua_pushnumber(L, self(L).cluster.time());
+    return 1;
+}
+
+int l_vertex(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    const lua_Integer v = luaL_checkinteger(L, 2);
+    if (v < 1 || v > c.n_vertices())
+        luaL_error(L, "vertex %d does not exist (the cluster has vertices 1..%d)",
+                   static_cast<int>(v), c.n_vertices());
+    const Vec3& x = c.position(static_cast<int>(v - 1));
+    push_numbers(L, std::vector<double>{x[0], x[1], x[2]});
+    return 1;
+}
+
+int l_triple_lines(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    lua_createtable(L, static_cast<int>(c.triple_lines().size()), 0);
+    int k = 0;
+    for (const TripleLine& line : c.triple_lines()) {
+        lua_createtable(L, 0, 3);
+        std::vector<double> ids(line.vertices.begin(), line.vertices.end()), surfaces;
+        for (double& v : ids) v += 1;
+        for (int s : line.surfaces) surfaces.push_back(s + 1);
+        push_numbers(L, ids);
+        lua_setfield(L, -2, "vertices");
+        push_numbers(L, surfaces);
+        lua_setfield(L, -2, "surfaces");
+        lua_pushboolean(L, line.closed);
+        lua_setfield(L, -2, "closed");
+        lua_rawseti(L, -2, ++k);
+    }
+    return 1;
+}
+
+int l_quadruple_points(lua_State* L) {
+    std::vector<double> ids;
+    for (int v : self(L).cluster.quadruple_points()) ids.push_back(v + 1);
+    push_numbers(L, ids);
+    return 1;
+}
+
+int l_bodies(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    lua_createtable(L, c.n_bodies(), 0);
+    for (int b = 0; b < c.n_bodies(); ++b) {
+        std::vector<double> signed_ids;
+        for (const BodyFace& f : c.bodies()[b].faces) signed_ids.push_back(f.sign * (f.surface + 1));
+        push_numbers(L, signed_ids);
+        lua_rawseti(L, -2, b + 1);
+    }
+    return 1;
+}
+
+int l_report(lua_State* L) {
+    push_report(L, make_report(self(L).cluster));
+    return 1;
+}
+
+int l_step(lua_State* L) {
+    ClusterHandle& h = self(L);
+    Options o(L, 2, "step");
+    const std::string flow = o.string("flow");
+    const double tau = o.number("tau");
+    o.finish();
+    return guarded(L, [&] {
+        const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau);
+        push_step_report(L, r);
+        return 1;
+    });
+}
+
+EvolveOptions read_evolve_options(lua_State* L, Options& o) {
+    EvolveOptions e;
+    e.flow = parse_flow(o.string("flow")); // throws InvalidInput, caught by the caller's guard
+    e.tau = o.number("tau");
+    if (o.has("T") && o.has("steps")) o.error("T", "and option 'steps' exclude each other");
+    if (!o.has("T") && !o.has("steps")) o.error("T", "or option 'steps' is required");
+    e.duration = o.number("T", -1.0);
+    e.steps = static_cast<int>(o.integer("steps", -1));
+    if (o.has("steps") && e.steps < 0) o.error("steps", "must be >= 0");
+    e.every = static_cast<int>(o.integer("every", 0));
+    e.output = o.string("output", "");
+    const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
+    e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;
+    if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))
+        o.error("on_step", "must be a function");
+    lua_pop(L, 1);
+    return e;
+}
+
+int l_evolve(lua_State* L) {
+    ClusterHandle& h = self(L);
+    Options o(L, 2, "evolve");
+    EvolveOptions e;
+    guarded(L, [&] { // parse_flow throws InvalidInput: it must become a Lua error
+        e = read_evolve_options(L, o);
+        return 0;
+    });
+    o.finish();
+    lua_getfield(L, 2, "on_step");
+    const int callback = lua_gettop(L);
+    if (lua_isfunction(L, callback))
+        e.on_step = [L, callback](const StepReport& r) {
+            lua_pushvalue(L, callback);
+            push_step_report(L, r);
+            lua_call(L, 1, 1); // errors propagate as Lua errors; the cluster keeps the last step
+            const bool go_on = !(lua_isboolean(L, -1) && !lua_toboolean(L, -1));
+            lua_pop(L, 1);
+            return go_on;
+        };
+    return guarded(L, [&] {
+        const EvolveResult r = evolve(h.cluster, h.stepper, e);
+        push_report(L, r.last);
+        set_integer(L, "steps", r.steps);
+        set_number(L, "wall_s", r.wall_seconds);
+        set_number(L, "solve_s", r.solve_seconds);
+        set_number(L, "max_energy_increase", r.max_energy_increase);
+        lua_pushstring(L, r.stop_reason.c_str());
+        lua_setfield(L, -2, "stop_reason");
+        return 1;
+    });
+}
+
+int l_write(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    const std::string path = luaL_checkstring(L, 2);
+    return guarded(L, [&] {
+        write_cluster(c, path, {{"mean_curvature", vertex_mean_curvature(c)}});
+        return 0;
+    });
+}
+
+int l_clone(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    push<ClusterHandle>(L, std::make_shared<ClusterHandle>(c), kClusterType);
+    return 1;
+}
+
+int l_tostring(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    lua_pushfstring(L, "froth.Cluster (%d vertices, %d facets, %d surfaces, %d triple lines, "
+                       "%d quadruple points, %d bodies, t = %f)",
+                    c.n_vertices(), c.n_facets(), c.n_surfaces(),
+                    static_cast<int>(c.triple_lines().size()),
+                    static_cast<int>(c.quadruple_points().size()), c.n_bodies(), c.time());
+    return 1;
+}
+
+int l_gc(lua_State* L) { return collect<ClusterHandle>(L, kClusterType); }
+
+const luaL_Reg methods[] = {
+    {"info", l_info},         {"energy", l_energy},
+    {"area", l_area},         {"volumes", l_volumes},
+    {"sigma", l_sigma},       {"set_sigma", l_set_sigma},
+    {"time", l_time},         {"vertex", l_vertex},
+    {"triple_lines", l_triple_lines}, {"quadruple_points", l_quadruple_points},
+    {"bodies", l_bodies},     {"report", l_report},
+    {"step", l_step},         {"evolve", l_evolve},
+    {"write", l_write},       {"clone", l_clone},
+    {nullptr, nullptr},
+};
+
+} // namespace
+
+void push_report(lua_State* L, const Report& r) {
+    lua_createtable(L, 0, 12);
+    set_number(L, "t", r.t);
+    set_number(L, "energy", r.energy);
+    push_numbers(L, r.volumes);
+    lua_setfield(L, -2, "volumes");
+    set_number(L, "volume_loss", r.volume_loss);
+    lua_createtable(L, 0, 3);
+    set_number(L, "min", r.angles.min);
+    set_number(L, "max", r.angles.max);
+    set_number(L, "mean", r.angles.mean);
+    lua_setfield(L, -2, "angles");
+    lua_createtable(L, 0, 4);
+    set_number(L, "min_angle", r.mesh.min_angle);
+    set_number(L, "max_angle", r.mesh.max_angle);
+    set_number(L, "max_edge_ratio", r.mesh.max_edge_ratio);
+    set_number(L, "min_area", r.mesh.min_area);
+    lua_setfield(L, -2, "mesh");
+}
+
+void push_step_report(lua_State* L, const StepReport& r) {
+    push_report(L, r);
+    lua_pushstring(L, flow_name(r.flow));
+    lua_setfield(L, -2, "flow");
+    set_number(L, "tau", r.tau);
+    set_number(L, "energy_before", r.energy_before);
+    set_number(L, "assemble_s", r.assemble_seconds);
+    set_number(L, "solve_s", r.solve_seconds);
+    set_integer(L, "unknowns", r.unknowns);
+}
+
+void register_cluster_type(lua_State* L) {
+    if (!luaL_newmetatable(L, kClusterType)) {
+        lua_pop(L, 1);
+        return;
+    }
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, l_gc);
+    lua_setfield(L, -2, "__gc");
+    lua_pushcfunction(L, l_tostring);
+    lua_setfield(L, -2, "__tostring");
+    lua_pop(L, 1);
+}
+
+void push_cluster(lua_State* L, ClusterSpec spec) {
+    auto handle = std::make_shared<ClusterHandle>(Cluster(std::move(spec)));
+    push<ClusterHandle>(L, std::move(handle), kClusterType);
+}
+
+} // namespace froth::lua

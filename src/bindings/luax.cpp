@@ -1,0 +1,109 @@
+#include "bindings/luax.h"
+
+#include <cmath>
+
+namespace froth::lua {
+
+Options::Options(lua_State* L, int idx, const char* op, bool optional)
+    : L_(L), idx_(lua_absindex(L, idx)), op_(op) {
+    if (optional && lua_isnoneornil(L, idx_)) {
+        if (lua_gettop(L) < idx_) lua_settop(L, idx_);
+        lua_newtable(L);
+        lua_replace(L, idx_);
+    }
+    if (!lua_istable(L, idx_))
+        luaL_error(L, "%s: expected an option table {...}, got %s", op_, luaL_typename(L, idx_));
+    lua_newtable(L);
+    known_ = lua_gettop(L);
+}
+
+int Options::type_of(const char* key) {
+    lua_pushboolean(L_, 1);
+    lua_setfield(L_, known_, key);
+    const int t = lua_getfield(L_, idx_, key);
+    lua_pop(L_, 1);
+    return t;
+}
+
+bool Options::has(const char* key) { return type_of(key) != LUA_TNIL; }
+
+void Options::error(const char* key, const char* what) {
+    luaL_error(L_, "%s: option '%s' %s", op_, key, what);
+    std::abort(); // not reached: luaL_error throws
+}
+
+double Options::number(const char* key) {
+    if (type_of(key) == LUA_TNIL) error(key, "is required");
+    return number(key, 0.0);
+}
+
+double Options::number(const char* key, double fallback) {
+    const int t = type_of(key);
+    if (t == LUA_TNIL) return fallback;
+    lua_getfield(L_, idx_, key);
+    int ok = 0;
+    const double v = lua_tonumberx(L_, -1, &ok);
+    lua_pop(L_, 1);
+    if (!ok || t != LUA_TNUMBER) error(key, "must be a number");
+    return v;
+}
+
+long long Options::integer(const char* key) {
+    if (type_of(key) == LUA_TNIL) error(key, "is required");
+    return integer(key, 0);
+}
+
+long long Options::integer(const char* key, long long fallback) {
+    if (type_of(key) == LUA_TNIL) return fallback;
+    lua_getfield(L_, idx_, key);
+    int ok = 0;
+    const lua_Integer v = lua_tointegerx(L_, -1, &ok);
+    lua_pop(L_, 1);
+    if (!ok) error(key, "must be an integer");
+    return v;
+}
+
+std::string Options::string(const char* key) {
+    if (type_of(key) == LUA_TNIL) error(key, "is required");
+    return string(key, "");
+}
+
+std::string Options::string(const char* key, const char* fallback) {
+    const int t = type_of(key);
+    if (t == LUA_TNIL) return fallback;
+    if (t != LUA_TSTRING) error(key, "must be a string");
+    lua_getfield(L_, idx_, key);
+    std::string s = lua_tostring(L_, -1);
+    lua_pop(L_, 1);
+    return s;
+}
+
+bool Options::boolean(const char* key, bool fallback) {
+    const int t = type_of(key);
+    if (t == LUA_TNIL) return fallback;
+    if (t != LUA_TBOOLEAN) error(key, "must be true or false");
+    lua_getfield(L_, idx_, key);
+    const bool b = lua_toboolean(L_, -1);
+    lua_pop(L_, 1);
+    return b;
+}
+
+int Options::push(const char* key) {
+    type_of(key);
+    return lua_getfield(L_, idx_, key);
+}
+
+void Options::finish() {
+    lua_pushnil(L_);
+    while (lua_next(L_, idx_)) {
+        lua_pop(L_, 1);
+        if (lua_type(L_, -1) != LUA_TSTRING) luaL_error(L_, "%s: option keys must be names", op_);
+        lua_pushvalue(L_, -1);
+        if (lua_rawget(L_, known_) == LUA_TNIL)
+            luaL_error(L_, "%s: unknown option '%s'", op_, lua_tostring(L_, -2));
+        lua_pop(L_, 1);
+    }
+    lua_remove(L_, known_);
+}
+
+} // namespace froth::lua

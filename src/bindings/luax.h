@@ -1,0 +1,98 @@
+#pragma once
+/// The binding toolkit: userdata boxes, error translation and option-table readers. Only the
+/// bindings include Lua. Lua is the C++ build (lua5.4-c++), so its errors are C++ exceptions:
+/// we never catch (...), and we raise Lua errors only outside catch blocks (cf. LOVE's
+/// luax_catchexcept).
+
+#include <lua.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <new>
+#include <string>
+#include <utility>
+
+namespace froth::lua {
+
+/// The userdata payload: a shared owner of one engine object.
+template <class T> struct Box {
+    std::shared_ptr<T> ptr;
+};
+
+template <class T> T& check(lua_State* L, int idx, const char* type_name) {
+    auto* box = static_cast<Box<T>*>(luaL_checkudata(L, idx, type_name));
+    return *box->ptr;
+}
+
+template <class T> void push(lua_State* L, std::shared_ptr<T> obj, const char* type_name) {
+    void* mem = lua_newuserdatauv(L, sizeof(Box<T>), 0);
+    auto* box = new (mem) Box<T>{};
+    luaL_setmetatable(L, type_name);
+    box->ptr = std::move(obj);
+}
+
+template <class T> int collect(lua_State* L, const char* type_name) {
+    static_cast<Box<T>*>(luaL_checkudata(L, 1, type_name))->~Box<T>();
+    return 0;
+}
+
+/// Runs fn (which returns its number of results); a std::exception becomes a Lua error with
+/// the same message, raised after the catch block has ended.
+template <class Fn> int guarded(lua_State* L, Fn&& fn) {
+    std::string message;
+    try {
+        return std::forward<Fn>(fn)();
+    } catch (const std::exception& e) {
+        message = e.what();
+    }
+    lua_pushstring(L, message.c_str());
+    return lua_error(L);
+}
+
+/// Reads option tables such as c:step{flow = "sd", tau = 1e-3}. Every read marks the key as
+/// known; finish() raises an error naming any key that was never read (typos must not pass).
+class Options {
+  public:
+    /// `idx` must be a table (or absent when `optional`); `op` prefixes messages ("step").
+    Options(lua_State* L, int idx, const char* op, bool optional = false);
+    bool has(const char* key);
+    double number(const char* key);                      ///< required
+    double number(const char* key, double fallback);
+    long long integer(const char* key);                  ///< required
+    long long integer(const char* key, long long fallback);
+    std::string string(const char* key);                 ///< required
+    std::string string(const char* key, const char* fallback);
+    bool boolean(const char* key, bool fallback);
+    /// Pushes the field (nil if absent) and marks it known.
+    int push(const char* key);
+    [[noreturn]] void error(const char* key, const char* what);
+    void finish();
+
+  private:
+    int type_of(const char* key);
+    lua_State* L_;
+    int idx_;
+    const char* op_;
+    int known_; ///< registry-free: a table on the stack of keys read
+};
+
+/// Pushes a Lua array of numbers.
+template <class Range> void push_numbers(lua_State* L, const Range& values) {
+    lua_createtable(L, static_cast<int>(std::size(values)), 0);
+    int i = 0;
+    for (double v : values) {
+        lua_pushnumber(L, v);
+        lua_rawseti(L, -2, ++i);
+    }
+}
+
+inline void set_number(lua_State* L, const char* key, double value) {
+    lua_pushnumber(L, value);
+    lua_setfield(L, -2, key);
+}
+inline void set_integer(lua_State* L, const char* key, long long value) {
+    lua_pushinteger(L, value);
+    lua_setfield(L, -2, key);
+}
+
+} // namespace froth::lua
