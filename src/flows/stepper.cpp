@@ -1,6 +1,7 @@
 #include "flows/stepper.h"
 
 #include "core/errors.h"
+#include "core/format.h"
 
 #include <chrono>
 #include <cmath>
@@ -66,7 +67,7 @@ TimeStepper::~TimeStepper() = default;
 
 StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
     if (!(std::isfinite(tau) && tau > 0))
-        throw InvalidInput("step: tau must be positive and finite, got " + std::to_string(tau));
+        throw InvalidInput("step: tau must be positive and finite, got " + fmt(tau));
     if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
         throw GeometryError("step: " + facet_name(s, f) + " has zero area; the scheme needs "
                             "non-degenerate facets (assumption (A) of the seed)");
@@ -74,8 +75,8 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
     for (double a : surface_areas(c)) area += a;
     if (area < 1e-10 * c.initial_area())
         throw GeometryError("step: the cluster has collapsed to a point (total area " +
-                            std::to_string(area) + ", initially " +
-                            std::to_string(c.initial_area()) + "); nothing is left to evolve");
+                            fmt(area) + ", initially " +
+                            fmt(c.initial_area()) + "); nothing is left to evolve");
     StepReport report;
     report.flow = flow;
     report.tau = tau;
@@ -109,12 +110,12 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
     report.unknowns = static_cast<int>(M.rows());
     if (!x.allFinite())
         throw SolverError("step: the linear solve produced non-finite values (tau = " +
-                          std::to_string(tau) + ")");
+                          fmt(tau) + ")");
 
     std::vector<Vec3> X = c.positions();
     for (int v = 0; v < c.n_vertices(); ++v) X[v] += x.segment<3>(3 * v);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
-        throw GeometryError("step: with tau = " + std::to_string(tau) + " the step would collapse " +
+        throw GeometryError("step: with tau = " + fmt(tau) + " the step would collapse " +
                             facet_name(s, f) + "; the cluster is unchanged (try a smaller tau)");
     c.set_positions(std::move(X));
     c.set_time(c.time() + tau);

@@ -60,32 +60,6 @@ PairGeometry pair_geometry(const Cluster& c) {
     return g;
 }
 
-AngleStats triple_line_angles(const Cluster& c) {
-    const auto& X = c.positions();
-    AngleStats s;
-    s.min = 360;
-    double sum = 0;
-    for (const JunctionEdge& e : c.junction_edges()) {
-        const Vec3 t = (X[e.b] - X[e.a]).normalized();
-        Vec3 mu[3]; // outward conormal of each film's facet at the edge
-        for (int j = 0; j < 3; ++j) {
-            const Vec3 d = X[e.a] - X[e.opposite[j]];
-            mu[j] = (d - d.dot(t) * t).normalized();
-        }
-        for (int j = 0; j < 3; ++j) {
-            const double cosine = std::clamp(mu[j].dot(mu[(j + 1) % 3]), -1.0, 1.0);
-            const double angle = std::acos(cosine) * 180.0 / M_PI;
-            s.min = std::min(s.min, angle);
-            s.max = std::max(s.max, angle);
-            sum += angle;
-            ++s.count;
-        }
-    }
-    s.mean = s.count ? sum / s.count : 0;
-    if (!s.count) s.min = 0;
-    return s;
-}
-
 MeshQuality mesh_quality(const Cluster& c) {
     const auto& X = c.positions();
     MeshQuality q;

@@ -1,6 +1,7 @@
 #include "mesh/cluster.h"
 
 #include "core/errors.h"
+#include "core/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,7 +70,7 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
         const auto& s = spec.surfaces[i];
         const std::string name = surface_name(static_cast<int>(i));
         if (!(std::isfinite(s.sigma) && s.sigma > 0))
-            throw InvalidInput("cluster: " + name + " has sigma " + std::to_string(s.sigma) +
+            throw InvalidInput("cluster: " + name + " has sigma " + fmt(s.sigma) +
                                "; sigma must be positive");
         if (s.triangles.empty()) throw InvalidInput("cluster: " + name + " has no facets");
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
@@ -104,7 +105,7 @@ void Cluster::set_sigma(int surface, double sigma) {
         throw InvalidInput("set_sigma: there is no surface " + std::to_string(surface + 1));
     if (!(std::isfinite(sigma) && sigma > 0))
         throw InvalidInput("set_sigma: " + surface_name(surface) + ": sigma must be positive, got " +
-                           std::to_string(sigma));
+                           fmt(sigma));
     surfaces_[surface].sigma = sigma;
 }
 

@@ -1,6 +1,7 @@
 #include "run/evolve.h"
 
 #include "core/errors.h"
+#include "core/format.h"
 #include "core/interrupt.h"
 #include "io/vtk_writer.h"
 
@@ -16,7 +17,7 @@ using Clock = std::chrono::steady_clock;
 
 void check_options(const EvolveOptions& o) {
     if (!(std::isfinite(o.tau) && o.tau > 0))
-        throw InvalidInput("evolve: tau must be positive and finite, got " + std::to_string(o.tau));
+        throw InvalidInput("evolve: tau must be positive and finite, got " + fmt(o.tau));
     const bool has_T = o.duration >= 0, has_steps = o.steps >= 0;
     if (has_T == has_steps) throw InvalidInput("evolve: give exactly one of T and steps");
     if (has_T && !(std::isfinite(o.duration) && o.duration > 0))

@@ -5,8 +5,24 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
 
+#include <cstdlib>
+
+// OpenBLAS, when it is the system BLAS (Debian's libopenblas0-pthread), spins its threads on
+// the small dense fronts of our factorisations: with 2 cores one thread is ~10% faster and
+// leaves the other core free (docs/benchmarks.md). Weak, so any other BLAS links as well.
+extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+
 namespace froth {
 namespace {
+
+void use_one_blas_thread() {
+    static const bool once = [] {
+        if (openblas_set_num_threads && !std::getenv("OPENBLAS_NUM_THREADS"))
+            openblas_set_num_threads(1);
+        return true;
+    }();
+    (void)once;
+}
 
 void check_finite(const SparseMatrix& A, const char* who) {
     for (int k = 0; k < A.nonZeros(); ++k)
@@ -21,6 +37,7 @@ struct SpdSolver::Impl {
 };
 
 SpdSolver::SpdSolver() : impl_(std::make_unique<Impl>()) {
+    use_one_blas_thread();
     impl_->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
 }
 SpdSolver::~SpdSolver() = default;
@@ -45,6 +62,7 @@ struct LuSolver::Impl {
 };
 
 LuSolver::LuSolver() : impl_(std::make_unique<Impl>()) {
+    use_one_blas_thread();
     // Our saddle points have a symmetric pattern: AMD on A + A' with diagonal pivots preferred
     // keeps the fill of a Cholesky-like factor (measured in bench/, docs/benchmarks.md).
     // METIS nested dissection beats AMD by about 1.5x on surface meshes of 3k vertices.

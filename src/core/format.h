@@ -1,0 +1,15 @@
+#pragma once
+/// Numbers in error messages: "%.6g" (std::to_string prints 1e-9 as "0.000000").
+
+#include <cstdio>
+#include <string>
+
+namespace froth {
+
+inline std::string fmt(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+
+} // namespace froth

@@ -1,0 +1,111 @@
+// Film angles at triple lines by local quadratic fits (see geometry.h for why not chords).
+#include "geometry/geometry.h"
+
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <cmath>
+
+namespace froth {
+namespace {
+
+/// Facets of each (surface, vertex) pair, as CSR over Cluster pairs.
+struct PairFacets {
+    std::vector<int> start, facet_surface, facet_index;
+};
+
+PairFacets pair_facets(const Cluster& c) {
+    PairFacets p;
+    p.start.assign(c.n_pairs() + 1, 0);
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles)
+            for (int v : t) ++p.start[c.pair_index(v, i) + 1];
+    for (int k = 0; k < c.n_pairs(); ++k) p.start[k + 1] += p.start[k];
+    p.facet_index.resize(p.start.back());
+    std::vector<int> fill(p.start.begin(), p.start.end() - 1);
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (int f = 0; f < static_cast<int>(c.surface(i).triangles.size()); ++f)
+            for (int v : c.surface(i).triangles[f]) p.facet_index[fill[c.pair_index(v, i)]++] = f;
+    return p;
+}
+
+/// Vertices of surface s within two facet rings of v (v excluded).
+std::vector<int> two_ring(const Cluster& c, const PairFacets& pf, int v, int s) {
+    std::vector<int> ring = {v};
+    for (int pass = 0; pass < 2; ++pass) {
+        const std::vector<int> seeds = ring;
+        for (int u : seeds) {
+            const int k = c.pair_index(u, s);
+            for (int x = pf.start[k]; x < pf.start[k + 1]; ++x)
+                for (int w : c.surface(s).triangles[pf.facet_index[x]]) ring.push_back(w);
+        }
+        std::sort(ring.begin(), ring.end());
+        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    }
+    ring.erase(std::find(ring.begin(), ring.end(), v));
+    return ring;
+}
+
+/// Unit direction in which film s leaves the line at x (tangent t), starting from the chord
+/// direction e1: fit w = a u + e r + b u^2 + c r^2 + d u r in the frame (e1, t, e2 = t x e1)
+/// and tilt e1 by the slope a.
+Vec3 film_direction(const Cluster& c, const std::vector<int>& ring, int v, const Vec3& t,
+                    const Vec3& e1) {
+    const Vec3 e2 = t.cross(e1);
+    const Vec3& x = c.position(v);
+    Eigen::MatrixXd P(ring.size(), 5);
+    Eigen::VectorXd w(ring.size());
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec3 d = c.position(ring[k]) - x;
+        const double u = d.dot(e1), r = d.dot(t);
+        P.row(k) << u, r, u * u, r * r, u * r;
+        w[k] = d.dot(e2);
+    }
+    if (ring.size() < 7) return e1;
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(P);
+    if (qr.rank() < 5) return e1;
+    const double slope = qr.solve(w)[0];
+    return (e1 + slope * e2).normalized();
+}
+
+} // namespace
+
+AngleStats triple_line_angles(const Cluster& c) {
+    const PairFacets pf = pair_facets(c);
+    AngleStats stats;
+    stats.min = 360;
+    double sum = 0;
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        const std::vector<int> edges = c.vertex_junction_edges(v);
+        if (edges.size() != 2) continue; // not on a line, or a quadruple point / line end
+        const JunctionEdge& e0 = c.junction_edges()[edges[0]];
+        const JunctionEdge& e1 = c.junction_edges()[edges[1]];
+        if (e0.surfaces != e1.surfaces) continue;
+        const int prev = e0.a == v ? e0.b : e0.a, next = e1.a == v ? e1.b : e1.a;
+        const Vec3 t = (c.position(next) - c.position(prev)).normalized();
+        Vec3 dir[3];
+        for (int j = 0; j < 3; ++j) {
+            // chord directions into the film from the facets at both line edges, averaged
+            Vec3 chord = Vec3::Zero();
+            for (const JunctionEdge* e : {&e0, &e1}) {
+                const Vec3 d = c.position(e->opposite[j]) - c.position(v);
+                chord += (d - d.dot(t) * t).normalized();
+            }
+            chord = (chord - chord.dot(t) * t).normalized();
+            dir[j] = film_direction(c, two_ring(c, pf, v, e0.surfaces[j]), v, t, chord);
+        }
+        for (int j = 0; j < 3; ++j) {
+            const double cosine = std::clamp(dir[j].dot(dir[(j + 1) % 3]), -1.0, 1.0);
+            const double angle = std::acos(cosine) * 180.0 / M_PI;
+            stats.min = std::min(stats.min, angle);
+            stats.max = std::max(stats.max, angle);
+            sum += angle;
+            ++stats.count;
+        }
+    }
+    stats.mean = stats.count ? sum / stats.count : 0;
+    if (!stats.count) stats.min = 0;
+    return stats;
+}
+
+} // namespace froth
