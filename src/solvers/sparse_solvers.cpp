@@ -7,18 +7,25 @@
 
 #include <cstdlib>
 
+#include <malloc.h>
+
 // OpenBLAS, when it is the system BLAS (Debian's libopenblas0-pthread), spins its threads on
 // the small dense fronts of our factorisations: with 2 cores one thread is ~10% faster and
-// leaves the other core free (docs/benchmarks.md). Weak, so any other BLAS links as well.
+// leaves the other core free. Weak, so any other BLAS links as well.
 extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 
 namespace froth {
 namespace {
 
-void use_one_blas_thread() {
+/// Process-wide settings that pay off for repeated factorisations (measured in
+/// docs/benchmarks.md): one BLAS thread, and glibc malloc keeping freed memory instead of
+/// returning each factor's workspace to the kernel (mmap/munmap churn cost ~20% of an SD step).
+void tune_for_factorisations() {
     static const bool once = [] {
         if (openblas_set_num_threads && !std::getenv("OPENBLAS_NUM_THREADS"))
             openblas_set_num_threads(1);
+        mallopt(M_MMAP_MAX, 0);
+        mallopt(M_TRIM_THRESHOLD, 1 << 30);
         return true;
     }();
     (void)once;
@@ -37,7 +44,7 @@ struct SpdSolver::Impl {
 };
 
 SpdSolver::SpdSolver() : impl_(std::make_unique<Impl>()) {
-    use_one_blas_thread();
+    tune_for_factorisations();
     impl_->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
 }
 SpdSolver::~SpdSolver() = default;
@@ -62,7 +69,7 @@ struct LuSolver::Impl {
 };
 
 LuSolver::LuSolver() : impl_(std::make_unique<Impl>()) {
-    use_one_blas_thread();
+    tune_for_factorisations();
     // Our saddle points have a symmetric pattern: AMD on A + A' with diagonal pivots preferred
     // keeps the fill of a Cholesky-like factor (measured in bench/, docs/benchmarks.md).
     // METIS nested dissection beats AMD by about 1.5x on surface meshes of 3k vertices.
