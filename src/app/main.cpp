@@ -183,7 +183,7 @@ constexpr const char* kHelp = R"lua(
 return function()
   print([[
 froth -- surface clusters by parametric FEM (plain Lua 5.4 plus the 'froth' table)
-  c = froth.double_bubble{h = 0.1}         -- a standard double bubble (gmsh builds)
+  c = froth.double_bubble{h = 0.1}         -- two half balls (seed 5.1.1, gmsh)
   print(c)                                  -- counts; c:energy(), c:volumes()
   r = c:step{flow = "mcf", tau = 1e-3}      -- one step ("sd": surface diffusion)
   r = c:evolve{flow = "sd", tau = 1e-3, steps = 100}  -- Ctrl-C stops it between steps

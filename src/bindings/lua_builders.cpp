@@ -200,7 +200,14 @@ int l_has(lua_State* L) {
 #else
     const bool gmsh = false;
 #endif
-    lua_pushboolean(L, feature == "gmsh" ? gmsh : false);
+#ifdef FROTH_HAVE_CGAL
+    const bool cgal = true;
+#else
+    const bool cgal = false;
+#endif
+    if (feature != "gmsh" && feature != "cgal")
+        luaL_error(L, "has: unknown feature '%s' (known: \"gmsh\", \"cgal\")", feature.c_str());
+    lua_pushboolean(L, feature == "gmsh" ? gmsh : cgal);
     return 1;
 }
 
