@@ -56,10 +56,10 @@ Report make_report(const Cluster& c) {
 }
 
 struct TimeStepper::System {
+    explicit System(Factorization kind) : solver(kind) {}
     SparseBuilder matrix;
     Eigen::VectorXd rhs;
-    SpdSolver spd;
-    LuSolver lu;
+    SparseDirectSolver solver;
 };
 
 TimeStepper::TimeStepper() = default;
@@ -85,7 +85,9 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
     const auto t0 = Clock::now();
     const PairGeometry g = pair_geometry(c);
     std::unique_ptr<System>& sys = flow == Flow::MeanCurvature ? mcf_ : sd_;
-    if (!sys) sys = std::make_unique<System>();
+    if (!sys)
+        sys = std::make_unique<System>(flow == Flow::MeanCurvature ? Factorization::Cholesky
+                                                                   : Factorization::LU);
     if (flow == Flow::MeanCurvature) {
         assemble_mcf(c, g, tau, sys->matrix, sys->rhs);
     } else {
@@ -96,16 +98,9 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
     report.assemble_seconds = seconds_since(t0);
 
     const auto t1 = Clock::now();
-    Eigen::VectorXd x;
-    if (flow == Flow::MeanCurvature) {
-        if (!sys->spd.analyzed()) sys->spd.analyze(M);
-        sys->spd.factorize(M);
-        x = sys->spd.solve(sys->rhs);
-    } else {
-        if (!sys->lu.analyzed()) sys->lu.analyze(M);
-        sys->lu.factorize(M);
-        x = sys->lu.solve(sys->rhs);
-    }
+    if (!sys->solver.analyzed()) sys->solver.analyze(M);
+    sys->solver.factorize(M);
+    const Eigen::VectorXd x = sys->solver.solve(sys->rhs);
     report.solve_seconds = seconds_since(t1);
     report.unknowns = static_cast<int>(M.rows());
     if (!x.allFinite())

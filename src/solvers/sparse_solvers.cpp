@@ -6,6 +6,7 @@
 #include <Eigen/UmfPackSupport>
 
 #include <cstdlib>
+#include <string>
 
 #include <malloc.h>
 
@@ -31,67 +32,57 @@ void tune_for_factorisations() {
     (void)once;
 }
 
-void check_finite(const SparseMatrix& A, const char* who) {
-    for (int k = 0; k < A.nonZeros(); ++k)
-        if (!std::isfinite(A.valuePtr()[k]))
-            throw SolverError(std::string(who) + ": the system matrix has non-finite entries");
-}
-
 } // namespace
 
-struct SpdSolver::Impl {
+struct SparseDirectSolver::Impl {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
-};
-
-SpdSolver::SpdSolver() : impl_(std::make_unique<Impl>()) {
-    tune_for_factorisations();
-    impl_->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
-}
-SpdSolver::~SpdSolver() = default;
-
-void SpdSolver::analyze(const SparseMatrix& A) {
-    impl_->llt.analyzePattern(A);
-    analyzed_ = true;
-}
-
-void SpdSolver::factorize(const SparseMatrix& A) {
-    check_finite(A, "cholesky");
-    impl_->llt.factorize(A);
-    if (impl_->llt.info() != Eigen::Success)
-        throw SolverError("cholesky: the system matrix is not positive definite "
-                          "(degenerate facets or a violated assumption (A) of the seed)");
-}
-
-Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& b) const { return impl_->llt.solve(b); }
-
-struct LuSolver::Impl {
     Eigen::UmfPackLU<SparseMatrix> lu;
 };
 
-LuSolver::LuSolver() : impl_(std::make_unique<Impl>()) {
+SparseDirectSolver::SparseDirectSolver(Factorization kind)
+    : impl_(std::make_unique<Impl>()), kind_(kind) {
     tune_for_factorisations();
-    // Our saddle points have a symmetric pattern: AMD on A + A' with diagonal pivots preferred
-    // keeps the fill of a Cholesky-like factor (measured in bench/, docs/benchmarks.md).
-    // METIS nested dissection beats AMD by about 1.5x on surface meshes of 3k vertices.
+    impl_->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
+    // Our saddle points have a symmetric pattern: AMD/METIS on A + A' with diagonal pivots
+    // preferred; METIS nested dissection beats AMD by about 1.5x on surface meshes.
     impl_->lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
     impl_->lu.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
 }
-LuSolver::~LuSolver() = default;
 
-void LuSolver::analyze(const SparseMatrix& A) {
-    impl_->lu.analyzePattern(A);
-    if (impl_->lu.info() != Eigen::Success) throw SolverError("lu: symbolic analysis failed");
+SparseDirectSolver::~SparseDirectSolver() = default;
+
+void SparseDirectSolver::analyze(const SparseMatrix& A) {
+    if (kind_ == Factorization::Cholesky) {
+        impl_->llt.analyzePattern(A);
+    } else {
+        impl_->lu.analyzePattern(A);
+        if (impl_->lu.info() != Eigen::Success) throw SolverError("lu: symbolic analysis failed");
+    }
     analyzed_ = true;
 }
 
-void LuSolver::factorize(const SparseMatrix& A) {
-    check_finite(A, "lu");
-    impl_->lu.factorize(A);
-    if (impl_->lu.info() != Eigen::Success)
-        throw SolverError("lu: the system matrix is singular (degenerate facets or a violated "
-                          "assumption (A) of the seed)");
+void SparseDirectSolver::factorize(const SparseMatrix& A) {
+    const char* who = kind_ == Factorization::Cholesky ? "cholesky" : "lu";
+    for (int k = 0; k < A.nonZeros(); ++k)
+        if (!std::isfinite(A.valuePtr()[k]))
+            throw SolverError(std::string(who) + ": the system matrix has non-finite entries");
+    bool ok;
+    if (kind_ == Factorization::Cholesky) {
+        impl_->llt.factorize(A);
+        ok = impl_->llt.info() == Eigen::Success;
+    } else {
+        impl_->lu.factorize(A);
+        ok = impl_->lu.info() == Eigen::Success;
+    }
+    if (!ok)
+        throw SolverError(std::string(who) + ": the system matrix is " +
+                          (kind_ == Factorization::Cholesky ? "not positive definite" : "singular") +
+                          " (degenerate facets or a violated assumption (A) of the seed)");
 }
 
-Eigen::VectorXd LuSolver::solve(const Eigen::VectorXd& b) const { return impl_->lu.solve(b); }
+Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& b) const {
+    if (kind_ == Factorization::Cholesky) return impl_->llt.solve(b);
+    return impl_->lu.solve(b);
+}
 
 } // namespace froth
