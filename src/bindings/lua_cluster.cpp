@@ -245,11 +245,14 @@ void push_report(lua_State* L, const Report& r) {
     push_numbers(L, r.volumes);
     lua_setfield(L, -2, "volumes");
     set_number(L, "volume_loss", r.volume_loss);
-    lua_createtable(L, 0, 3);
-    set_number(L, "min", r.angles.min);
-    set_number(L, "max", r.angles.max);
-    set_number(L, "mean", r.angles.mean);
-    lua_setfield(L, -2, "angles");
+    if (r.angles.count > 0) { // no triple lines: no angles (nil, not zeros)
+        lua_createtable(L, 0, 4);
+        set_number(L, "min", r.angles.min);
+        set_number(L, "max", r.angles.max);
+        set_number(L, "mean", r.angles.mean);
+        set_integer(L, "count", r.angles.count);
+        lua_setfield(L, -2, "angles");
+    }
     lua_createtable(L, 0, 4);
     set_number(L, "min_angle", r.mesh.min_angle);
     set_number(L, "max_angle", r.mesh.max_angle);

@@ -57,7 +57,10 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
             break;
         }
         double tau = o.tau;
-        if (o.steps < 0) tau = std::min(tau, t_end - c.time());
+        if (o.steps < 0) {
+            tau = std::min(tau, t_end - c.time());
+            if (tau <= 1e-12 * o.tau) break; // T reached up to round-off
+        }
         const StepReport s = stepper.step(c, o.flow, tau);
         ++r.steps;
         r.solve_seconds += s.solve_seconds;
