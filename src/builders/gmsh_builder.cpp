@@ -75,7 +75,7 @@ template <class E, class F> auto in_session(const std::string& prefix, F&& body)
         throw E(prefix + s);
     } catch (const std::exception& e) {
         throw E(prefix + e.what());
-    } catch (...) {
+    } catch (...) { // safe: no Lua code runs inside a gmsh session
         throw E(prefix + "unknown gmsh error");
     }
 }

@@ -153,7 +153,7 @@ void PvdSeries::add(double time, const Cluster& c, const std::vector<PointField>
     entries_.push_back({time, std::filesystem::path(snap).filename().string()});
     try {
         write_pvd();
-    } catch (...) {
+    } catch (const std::exception&) { // only std exceptions: no Lua runs in here
         entries_.pop_back();
         throw;
     }
