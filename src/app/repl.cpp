@@ -47,10 +47,16 @@ void on_sigint_running(int) {
                 LUA_MASKCALL | LUA_MASKRET | LUA_MASKLINE | LUA_MASKCOUNT, 1);
 }
 
-// lua.c's lstop. If an engine loop already consumed the flag (and returned "interrupted"
-// normally), the script goes on: re-arm Ctrl-C instead of raising.
+// lua.c's lstop. Inside an evolution (its on_step callback), a first Ctrl-C is left to the
+// engine loop, which stops after the current step and returns "interrupted"; a second one
+// that nobody served yet raises here. If an engine loop already consumed the flag (and
+// returned normally), the script goes on: re-arm Ctrl-C instead of raising.
 void interrupt_hook(lua_State* L, lua_Debug*) {
     lua_sethook(L, nullptr, 0, 0);
+    if (froth::engine_loop_active() && froth::interrupt_requests() == 1) {
+        set_handler(SIGINT, on_sigint_running);
+        return;
+    }
     if (!froth::consume_interrupt()) {
         set_handler(SIGINT, on_sigint_running);
         return;

@@ -9,6 +9,7 @@
 #include "builders/gmsh_builder.h"
 #endif
 
+#include <climits>
 #include <string>
 
 namespace froth::lua {
@@ -34,7 +35,11 @@ int id_at(lua_State* L, int table, int i, const std::string& path) {
     lua_rawgeti(L, table, i);
     int ok = 0;
     const lua_Integer v = lua_tointegerx(L, -1, &ok);
-    if (!ok) luaL_error(L, "cluster: %s[%d] must be an integer id", path.c_str(), i);
+    if (!ok || lua_type(L, -1) != LUA_TNUMBER)
+        luaL_error(L, "cluster: %s[%d] must be an integer id", path.c_str(), i);
+    if (v < INT_MIN + 1 || v > INT_MAX) // ids beyond int would wrap around silently
+        luaL_error(L, "cluster: %s[%d] = %I is out of range", path.c_str(), i,
+                   static_cast<LUAI_UACINT>(v));
     lua_pop(L, 1);
     return static_cast<int>(v - 1);
 }

@@ -6,6 +6,8 @@
 #include "io/write.h"
 #include "run/evolve.h"
 
+#include <cmath>
+
 #include <unistd.h>
 
 namespace froth::lua {
@@ -14,11 +16,7 @@ namespace {
 ClusterHandle& self(lua_State* L) { return check<ClusterHandle>(L, 1, kClusterType); }
 
 int check_surface(lua_State* L, int idx, const Cluster& c) {
-    const lua_Integer i = luaL_checkinteger(L, idx);
-    if (i < 1 || i > c.n_surfaces())
-        luaL_error(L, "surface %d does not exist (the cluster has surfaces 1..%d)",
-                   static_cast<int>(i), c.n_surfaces());
-    return static_cast<int>(i - 1);
+    return check_id(L, idx, c.n_surfaces(), "surface", "surfaces");
 }
 
 int l_info(lua_State* L) {
@@ -79,11 +77,7 @@ int l_time(lua_State* L) {
 
 int l_vertex(lua_State* L) {
     const Cluster& c = self(L).cluster;
-    const lua_Integer v = luaL_checkinteger(L, 2);
-    if (v < 1 || v > c.n_vertices())
-        luaL_error(L, "vertex %d does not exist (the cluster has vertices 1..%d)",
-                   static_cast<int>(v), c.n_vertices());
-    const Vec3& x = c.position(static_cast<int>(v - 1));
+    const Vec3& x = c.position(check_id(L, 2, c.n_vertices(), "vertex", "vertices"));
     push_numbers(L, std::vector<double>{x[0], x[1], x[2]});
     return 1;
 }
@@ -94,12 +88,9 @@ int l_triple_lines(lua_State* L) {
     int k = 0;
     for (const TripleLine& line : c.triple_lines()) {
         lua_createtable(L, 0, 3);
-        std::vector<double> ids(line.vertices.begin(), line.vertices.end()), surfaces;
-        for (double& v : ids) v += 1;
-        for (int s : line.surfaces) surfaces.push_back(s + 1);
-        push_numbers(L, ids);
+        push_integers(L, line.vertices, 1);
         lua_setfield(L, -2, "vertices");
-        push_numbers(L, surfaces);
+        push_integers(L, line.surfaces, 1);
         lua_setfield(L, -2, "surfaces");
         lua_pushboolean(L, line.closed);
         lua_setfield(L, -2, "closed");
@@ -109,9 +100,7 @@ int l_triple_lines(lua_State* L) {
 }
 
 int l_quadruple_points(lua_State* L) {
-    std::vector<double> ids;
-    for (int v : self(L).cluster.quadruple_points()) ids.push_back(v + 1);
-    push_numbers(L, ids);
+    push_integers(L, self(L).cluster.quadruple_points(), 1);
     return 1;
 }
 
@@ -119,9 +108,9 @@ int l_bodies(lua_State* L) {
     const Cluster& c = self(L).cluster;
     lua_createtable(L, c.n_bodies(), 0);
     for (int b = 0; b < c.n_bodies(); ++b) {
-        std::vector<double> signed_ids;
+        std::vector<int> signed_ids;
         for (const BodyFace& f : c.bodies()[b].faces) signed_ids.push_back(f.sign * (f.surface + 1));
-        push_numbers(L, signed_ids);
+        push_integers(L, signed_ids);
         lua_rawseti(L, -2, b + 1);
     }
     return 1;
@@ -151,7 +140,10 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     e.tau = o.number("tau");
     if (o.has("T") && o.has("steps")) o.error("T", "and option 'steps' exclude each other");
     if (!o.has("T") && !o.has("steps")) o.error("T", "or option 'steps' is required");
-    e.duration = o.number("T", -1.0);
+    if (o.has("T")) {
+        e.duration = o.number("T");
+        if (!(std::isfinite(e.duration) && e.duration > 0)) o.error("T", "must be positive and finite");
+    }
     e.steps = static_cast<int>(o.integer("steps", -1));
     if (o.has("steps") && e.steps < 0) o.error("steps", "must be >= 0");
     e.every = static_cast<int>(o.integer("every", 0));

@@ -1,8 +1,17 @@
 #include "bindings/luax.h"
 
+#include <climits>
 #include <cmath>
 
 namespace froth::lua {
+
+int check_id(lua_State* L, int idx, int n, const char* kind, const char* kinds) {
+    const lua_Integer i = luaL_checkinteger(L, idx);
+    if (i < 1 || i > n)
+        luaL_error(L, "%s %I does not exist (the cluster has %s 1..%d)", kind,
+                   static_cast<LUAI_UACINT>(i), kinds, n);
+    return static_cast<int>(i - 1);
+}
 
 Options::Options(lua_State* L, int idx, const char* op, bool optional)
     : L_(L), idx_(lua_absindex(L, idx)), op_(op) {
@@ -60,6 +69,7 @@ long long Options::integer(const char* key, long long fallback) {
     const lua_Integer v = lua_tointegerx(L_, -1, &ok);
     lua_pop(L_, 1);
     if (!ok) error(key, "must be an integer");
+    if (v < INT_MIN || v > INT_MAX) error(key, "is out of range");
     return v;
 }
 

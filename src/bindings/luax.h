@@ -86,6 +86,20 @@ template <class Range> void push_numbers(lua_State* L, const Range& values) {
     }
 }
 
+/// Pushes a Lua array of integers, adding `offset` (1 turns 0-based ids into Lua ids).
+template <class Range> void push_integers(lua_State* L, const Range& values, long long offset = 0) {
+    lua_createtable(L, static_cast<int>(std::size(values)), 0);
+    int i = 0;
+    for (auto v : values) {
+        lua_pushinteger(L, static_cast<lua_Integer>(v) + offset);
+        lua_rawseti(L, -2, ++i);
+    }
+}
+
+/// Checks that argument idx is an integer id in 1..n and returns it 0-based; the message
+/// names the kind ("surface 7 does not exist (the cluster has surfaces 1..3)").
+int check_id(lua_State* L, int idx, int n, const char* kind, const char* kinds);
+
 inline void set_number(lua_State* L, const char* key, double value) {
     lua_pushnumber(L, value);
     lua_setfield(L, -2, key);

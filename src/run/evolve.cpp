@@ -39,6 +39,7 @@ void draw_progress(std::FILE* out, const EvolveResult& r, const StepReport& s, d
 
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     check_options(o);
+    const EngineLoopScope polling; // Ctrl-C is served between steps, also inside on_step
     const auto start = Clock::now();
     const double t_end = c.time() + o.duration;
     const int total = o.steps >= 0 ? o.steps : static_cast<int>(std::ceil(o.duration / o.tau - 1e-9));
@@ -56,12 +57,12 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
             r.stop_reason = "interrupted";
             break;
         }
-        double tau = o.tau;
-        if (o.steps < 0) {
-            tau = std::min(tau, t_end - c.time());
-            if (tau <= 1e-12 * o.tau) break; // T reached up to round-off
-        }
-        const StepReport s = stepper.step(c, o.flow, tau);
+        // The last step of a T-run ends exactly at t_end, whatever the summed round-off.
+        const bool last = o.steps < 0 && r.steps == total - 1;
+        const double tau = last ? t_end - c.time() : o.tau;
+        if (tau <= 1e-12 * o.tau) break; // T reached up to round-off
+        StepReport s = stepper.step(c, o.flow, tau);
+        if (last) c.set_time(t_end), s.t = t_end;
         ++r.steps;
         r.solve_seconds += s.solve_seconds;
         r.max_energy_increase = std::max(r.max_energy_increase,

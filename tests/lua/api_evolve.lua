@@ -127,6 +127,18 @@ for _, f in ipairs(files) do os.remove(f) end
 os.remove(dir)
 
 -- Errors, with the cluster unchanged.
+-- T-runs end exactly at t0 + T even when the summed steps fall short by round-off
+-- (ten steps of 0.1 add up to 0.9999999999999999).
+do
+  local s = froth.has("gmsh") and froth.sphere{h = 0.3}
+  if s then
+    local r = s:evolve{flow = "sd", tau = 0.1, T = 1, progress = false}
+    T.assert_equal(r.t, 1, "T = 1 in steps of 0.1 ends exactly at 1")
+    T.assert_equal(r.steps, 10, "ten steps")
+    T.assert_equal(s:time(), 1, "cluster time exactly 1")
+  end
+end
+
 c = base:clone()
 local E = c:energy()
 local function bad(text, opts) T.check_error(text, c.evolve, c, opts) end
@@ -139,9 +151,11 @@ bad("evolve: option 'steps' must be an integer", {flow = "sd", tau = tau, steps 
 bad("evolve: option 'every' must be an integer", {flow = "sd", tau = tau, steps = 1, every = "x"})
 bad("evolve: tau must be positive and finite, got 0", {flow = "sd", tau = 0, steps = 1})
 bad("evolve: option 'tau' is required", {flow = "sd", steps = 1})
-bad("evolve: T must be positive and finite", {flow = "sd", tau = tau, T = 0})
-bad("evolve: T must be positive and finite", {flow = "sd", tau = tau, T = math.huge})
-bad("evolve: ", {flow = "sd", tau = tau, T = -1}) -- any evolve error
+bad("evolve: option 'T' must be positive and finite", {flow = "sd", tau = tau, T = 0})
+bad("evolve: option 'T' must be positive and finite", {flow = "sd", tau = tau, T = math.huge})
+bad("evolve: option 'T' must be positive and finite", {flow = "sd", tau = tau, T = -1})
+bad("evolve: option 'T' must be positive and finite", {flow = "sd", tau = tau, T = 0 / 0})
+bad("evolve: option 'steps' is out of range", {flow = "sd", tau = tau, steps = 4294967296})
 bad("step: unknown flow 'xyz'", {flow = "xyz", tau = tau, steps = 1})
 bad("evolve: unknown option 'bogus'", {flow = "sd", tau = tau, steps = 1, bogus = true})
 bad("evolve: option 'output' must be a string", {flow = "sd", tau = tau, steps = 1, output = 1})
