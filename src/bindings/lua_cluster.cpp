@@ -182,6 +182,7 @@ int l_evolve(lua_State* L) {
         set_integer(L, "steps", r.steps);
         set_number(L, "wall_s", r.wall_seconds);
         set_number(L, "solve_s", r.solve_seconds);
+        set_integer(L, "factorizations", r.factorizations);
         set_number(L, "max_energy_increase", r.max_energy_increase);
         lua_pushstring(L, r.stop_reason.c_str());
         lua_setfield(L, -2, "stop_reason");
@@ -262,6 +263,9 @@ void push_step_report(lua_State* L, const StepReport& r) {
     set_number(L, "assemble_s", r.assemble_seconds);
     set_number(L, "solve_s", r.solve_seconds);
     set_integer(L, "unknowns", r.unknowns);
+    set_integer(L, "solver_iterations", r.solver_iterations);
+    lua_pushboolean(L, r.refactorized);
+    lua_setfield(L, -2, "refactorized");
 }
 
 void register_cluster_type(lua_State* L) {

@@ -98,9 +98,10 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
     report.assemble_seconds = seconds_since(t0);
 
     const auto t1 = Clock::now();
-    if (!sys->solver.analyzed()) sys->solver.analyze(M);
-    sys->solver.factorize(M);
-    const Eigen::VectorXd x = sys->solver.solve(sys->rhs);
+    SolveStats stats;
+    const Eigen::VectorXd x = sys->solver.solve(M, sys->rhs, &stats);
+    report.solver_iterations = stats.iterations;
+    report.refactorized = stats.refactorized;
     report.solve_seconds = seconds_since(t1);
     report.unknowns = static_cast<int>(M.rows());
     if (!x.allFinite())

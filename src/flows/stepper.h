@@ -2,7 +2,8 @@
 /// Time stepping of the isotropic schemes of the seed: mean curvature flow (3.5a,b) solved as
 /// the SPD system (4.6b) on CHOLMOD, surface diffusion (3.6a,b) as a symmetric saddle point on
 /// UMFPACK (numerics.md §5). Each flow's system keeps its sparsity pattern and symbolic
-/// factorisation for the life of the stepper; every step refactorises numerically only.
+/// factorisation for the life of the stepper; a numeric factorisation is reused across steps
+/// as long as it preconditions GMRES well (solvers/sparse_solvers.h).
 
 #include "assembly/flow_systems.h"
 #include "solvers/sparse_solvers.h"
@@ -36,6 +37,8 @@ struct StepReport : Report {
     double energy_before = 0;
     double assemble_seconds = 0, solve_seconds = 0;
     int unknowns = 0;
+    int solver_iterations = 0; ///< GMRES iterations on top of the (possibly lagged) factor
+    bool refactorized = false; ///< this step made a new numeric factorisation
 };
 
 /// Steps one cluster; keep one stepper per cluster (it caches that cluster's patterns).

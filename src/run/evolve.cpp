@@ -65,6 +65,7 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
         if (last) c.set_time(t_end), s.t = t_end;
         ++r.steps;
         r.solve_seconds += s.solve_seconds;
+        r.factorizations += s.refactorized;
         r.max_energy_increase = std::max(r.max_energy_increase,
                                          (s.energy - s.energy_before) / s.energy_before);
         written_last = false;

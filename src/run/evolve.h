@@ -27,6 +27,7 @@ struct EvolveResult {
     Report last;                     ///< the state at the end
     double wall_seconds = 0;
     double solve_seconds = 0;        ///< summed over the steps
+    int factorizations = 0;          ///< numeric factorisations made (the rest reused one)
     double max_energy_increase = 0;  ///< largest relative energy increase of any step (0 if none)
     std::string stop_reason;         ///< "T reached", "steps done", "on_step", "interrupted"
 };

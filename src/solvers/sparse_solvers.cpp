@@ -1,6 +1,7 @@
 #include "solvers/sparse_solvers.h"
 
 #include "core/errors.h"
+#include "solvers/gmres.h"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
@@ -17,6 +18,15 @@ extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 
 namespace froth {
 namespace {
+
+// A GMRES iteration costs one pair of triangular solves, about 1/16 of a factorisation on the
+// default scene, and a lagged factor needs about one more iteration per step of lag: so a
+// solve that needed more than kRefactorAfter iterations makes the next one refactorise first
+// (measured optimum on the double bubble; docs/benchmarks.md).
+constexpr double kTolerance = 1e-13; // normwise backward error |b - Ax| / (|A||x| + |b|)
+constexpr int kRefactorAfter = 8;
+constexpr int kLaggedIterations = 20; // a lagged factor that needs more has failed
+constexpr int kFreshIterations = 30;
 
 /// Process-wide settings that pay off for repeated factorisations (measured in
 /// docs/benchmarks.md): one BLAS thread, and glibc malloc keeping freed memory instead of
@@ -39,50 +49,80 @@ struct SparseDirectSolver::Impl {
     Eigen::UmfPackLU<SparseMatrix> lu;
 };
 
-SparseDirectSolver::SparseDirectSolver(Factorization kind)
-    : impl_(std::make_unique<Impl>()), kind_(kind) {
+SparseDirectSolver::SparseDirectSolver(Factorization kind, bool reuse)
+    : impl_(std::make_unique<Impl>()), kind_(kind), reuse_(reuse) {
     tune_for_factorisations();
     impl_->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
     // Our saddle points have a symmetric pattern: AMD/METIS on A + A' with diagonal pivots
-    // preferred; METIS nested dissection beats AMD by about 1.5x on surface meshes.
-    impl_->lu.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
-    impl_->lu.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
+    // preferred; METIS nested dissection beats AMD by about 1.5x on surface meshes. UMFPACK's
+    // own iterative refinement is off: GMRES below does that job (and more) for less.
+    auto& control = impl_->lu.umfpackControl();
+    control(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+    control(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
+    control(UMFPACK_IRSTEP) = 0;
 }
 
 SparseDirectSolver::~SparseDirectSolver() = default;
 
-void SparseDirectSolver::analyze(const SparseMatrix& A) {
-    if (kind_ == Factorization::Cholesky) {
-        impl_->llt.analyzePattern(A);
-    } else {
-        impl_->lu.analyzePattern(A);
-        if (impl_->lu.info() != Eigen::Success) throw SolverError("lu: symbolic analysis failed");
-    }
-    analyzed_ = true;
-}
-
 void SparseDirectSolver::factorize(const SparseMatrix& A) {
-    const char* who = kind_ == Factorization::Cholesky ? "cholesky" : "lu";
+    const std::string who = kind_ == Factorization::Cholesky ? "cholesky" : "lu";
     for (int k = 0; k < A.nonZeros(); ++k)
         if (!std::isfinite(A.valuePtr()[k]))
-            throw SolverError(std::string(who) + ": the system matrix has non-finite entries");
+            throw SolverError(who + ": the system matrix has non-finite entries");
+    factorized_ = false;
     bool ok;
     if (kind_ == Factorization::Cholesky) {
+        if (!analyzed_) impl_->llt.analyzePattern(A);
         impl_->llt.factorize(A);
         ok = impl_->llt.info() == Eigen::Success;
     } else {
+        if (!analyzed_) impl_->lu.analyzePattern(A);
+        if (impl_->lu.info() != Eigen::Success) throw SolverError("lu: symbolic analysis failed");
         impl_->lu.factorize(A);
         ok = impl_->lu.info() == Eigen::Success;
     }
+    analyzed_ = true;
     if (!ok)
-        throw SolverError(std::string(who) + ": the system matrix is " +
+        throw SolverError(who + ": the system matrix is " +
                           (kind_ == Factorization::Cholesky ? "not positive definite" : "singular") +
                           " (degenerate facets or a violated assumption (A) of the seed)");
+    factorized_ = true;
 }
 
-Eigen::VectorXd SparseDirectSolver::solve(const Eigen::VectorXd& b) const {
+Eigen::VectorXd SparseDirectSolver::apply_factor(const Eigen::VectorXd& b) const {
     if (kind_ == Factorization::Cholesky) return impl_->llt.solve(b);
     return impl_->lu.solve(b);
+}
+
+Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b,
+                                          SolveStats* stats) {
+    SolveStats s;
+    auto apply_A = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return A * v; };
+    auto apply_P = [&](const Eigen::VectorXd& v) { return apply_factor(v); };
+    // The backward error, not the relative residual, is what a direct solve guarantees; with
+    // tau = 10 the saddle point is too ill-conditioned for a 1e-13 relative residual.
+    const double norm_A = A.norm(); // Frobenius: bounds the 2-norm from above
+    auto target = [&](const Eigen::VectorXd& x0) { return kTolerance * (norm_A * x0.norm() + b.norm()); };
+    Eigen::VectorXd x;
+    bool need_factor = !(reuse_ && factorized_ && last_iterations_ <= kRefactorAfter);
+    if (!need_factor) {
+        x = apply_factor(b);
+        s.iterations = detail::gmres(apply_A, apply_P, b, x, target(x), kLaggedIterations);
+        need_factor = s.iterations < 0;
+    }
+    if (need_factor) {
+        factorize(A);
+        s.refactorized = true;
+        x = apply_factor(b);
+        s.iterations = detail::gmres(apply_A, apply_P, b, x, target(x), kFreshIterations);
+        if (s.iterations < 0 || !x.allFinite())
+            throw SolverError("solve: no convergence even with a fresh factorisation "
+                              "(the system is numerically singular)");
+    }
+    last_iterations_ = s.iterations;
+    s.residual = (b - apply_A(x)).norm() / (norm_A * x.norm() + b.norm());
+    if (stats) *stats = s;
+    return x;
 }
 
 } // namespace froth
