@@ -1,7 +1,7 @@
 #pragma once
 /// The binding toolkit: userdata boxes, error translation and option-table readers. Only the
 /// bindings include Lua. Lua is the C++ build (lua5.4-c++), so its errors are C++ exceptions:
-/// we never catch (...), and we raise Lua errors only outside catch blocks (cf. LOVE's
+/// no catch-all handlers here, and we raise Lua errors only outside catch blocks (cf. LOVE's
 /// luax_catchexcept).
 
 #include <lua.hpp>
