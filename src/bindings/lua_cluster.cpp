@@ -7,6 +7,7 @@
 #include "run/evolve.h"
 
 #include <cmath>
+#include <string_view>
 
 #include <unistd.h>
 
@@ -134,6 +135,28 @@ int l_step(lua_State* L) {
     });
 }
 
+/// watch = false switches the topology watch off; a table sets its thresholds.
+WatchOptions read_watch_options(lua_State* L, Options& o) {
+    WatchOptions w;
+    const int t = o.push("watch");
+    const int idx = lua_gettop(L);
+    if (t == LUA_TBOOLEAN) {
+        w.enabled = lua_toboolean(L, idx);
+    } else if (t == LUA_TTABLE) {
+        Options wo(L, idx, "evolve: watch");
+        w.min_volume_fraction = wo.number("min_volume_fraction", w.min_volume_fraction);
+        w.min_edge_fraction = wo.number("min_edge_fraction", w.min_edge_fraction);
+        w.min_facet_angle = wo.number("min_facet_angle", w.min_facet_angle);
+        w.self_intersection_every =
+            static_cast<int>(wo.integer("self_intersection_every", w.self_intersection_every));
+        wo.finish();
+    } else if (t != LUA_TNIL) {
+        o.error("watch", "must be false or a table of thresholds");
+    }
+    lua_settop(L, idx - 1);
+    return w;
+}
+
 EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     EvolveOptions e;
     e.flow = parse_flow(o.string("flow")); // throws InvalidInput, caught by the caller's guard
@@ -153,6 +176,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))
         o.error("on_step", "must be a function");
     lua_pop(L, 1);
+    e.watch = read_watch_options(L, o);
     return e;
 }
 
@@ -186,6 +210,15 @@ int l_evolve(lua_State* L) {
         set_number(L, "max_energy_increase", r.max_energy_increase);
         lua_pushstring(L, r.stop_reason.c_str());
         lua_setfield(L, -2, "stop_reason");
+        if (r.event) {
+            lua_createtable(L, 0, 3);
+            lua_pushstring(L, r.event->kind.c_str());
+            lua_setfield(L, -2, "kind");
+            lua_pushstring(L, r.event->message.c_str());
+            lua_setfield(L, -2, "message");
+            set_number(L, "t", r.event->t);
+            lua_setfield(L, -2, "event");
+        }
         return 1;
     });
 }
@@ -231,6 +264,19 @@ const luaL_Reg methods[] = {
 
 } // namespace
 
+/// Sets t[key] = {min, max, mean, count[, young_error]}; no angles (nil, not zeros) when
+/// there is nothing to measure.
+void push_angles(lua_State* L, const AngleStats& a, const char* key) {
+    if (a.count == 0) return;
+    lua_createtable(L, 0, 5);
+    set_number(L, "min", a.min);
+    set_number(L, "max", a.max);
+    set_number(L, "mean", a.mean);
+    set_integer(L, "count", a.count);
+    if (std::string_view(key) == "angles") set_number(L, "young_error", a.young_error);
+    lua_setfield(L, -2, key);
+}
+
 void push_report(lua_State* L, const Report& r) {
     lua_createtable(L, 0, 12);
     set_number(L, "t", r.t);
@@ -238,14 +284,8 @@ void push_report(lua_State* L, const Report& r) {
     push_numbers(L, r.volumes);
     lua_setfield(L, -2, "volumes");
     set_number(L, "volume_loss", r.volume_loss);
-    if (r.angles.count > 0) { // no triple lines: no angles (nil, not zeros)
-        lua_createtable(L, 0, 4);
-        set_number(L, "min", r.angles.min);
-        set_number(L, "max", r.angles.max);
-        set_number(L, "mean", r.angles.mean);
-        set_integer(L, "count", r.angles.count);
-        lua_setfield(L, -2, "angles");
-    }
+    push_angles(L, r.angles, "angles");
+    push_angles(L, r.quadruple_angles, "quadruple_angles");
     lua_createtable(L, 0, 4);
     set_number(L, "min_angle", r.mesh.min_angle);
     set_number(L, "max_angle", r.mesh.max_angle);

@@ -51,6 +51,7 @@ Report make_report(const Cluster& c) {
     r.volumes = body_volumes(c);
     r.volume_loss = max_volume_loss(c, r.volumes);
     r.angles = triple_line_angles(c);
+    r.quadruple_angles = quadruple_point_angles(c);
     r.mesh = mesh_quality(c);
     return r;
 }

@@ -25,7 +25,8 @@ struct Report {
     double t = 0, energy = 0;
     std::vector<double> volumes;
     double volume_loss = 0; ///< max relative change of any body volume since the start
-    AngleStats angles;
+    AngleStats angles;            ///< between films at triple lines
+    AngleStats quadruple_angles;  ///< between triple lines at quadruple points
     MeshQuality mesh;
 };
 Report make_report(const Cluster& c);

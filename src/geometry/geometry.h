@@ -34,12 +34,21 @@ PairGeometry pair_geometry(const Cluster& c);
 struct AngleStats {
     double min = 0, max = 0, mean = 0; ///< degrees
     int count = 0;
+    /// Film angles only: the largest deviation (degrees) from the angles Young's law predicts
+    /// for the tensions, cos theta_jk = (sigma_i^2 - sigma_j^2 - sigma_k^2) / (2 sigma_j sigma_k)
+    /// (force balance sum_j sigma_j mu_j = 0); NaN if some tensions admit no balance.
+    double young_error = 0;
 };
 /// Angles between the films at the triple lines, three per line vertex (quadruple points and
 /// line ends excluded). Each film's direction leaving the line is taken from a quadratic fit of
 /// the film over two rings of its vertices, so the measurement is second order in h; the facet
 /// chords alone are biased by about h * curvature / 2 (2-3 degrees on the default scene).
 AngleStats triple_line_angles(const Cluster& c);
+
+/// Angles between the triple lines leaving each quadruple point (6 per point with 4 lines;
+/// arccos(-1/3) = 109.47 degrees at equilibrium). Line directions from quadratic extrapolation
+/// through the next two vertices of each line.
+AngleStats quadruple_point_angles(const Cluster& c);
 
 struct MeshQuality {
     double min_angle = 0, max_angle = 0; ///< facet corner angles, degrees

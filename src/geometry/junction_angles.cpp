@@ -68,13 +68,52 @@ Vec3 film_direction(const Cluster& c, const std::vector<int>& ring, int v, const
     return (e1 + slope * e2).normalized();
 }
 
+/// The angle (degrees) between films j and k that Young's law predicts when film i is third.
+double young_angle(double si, double sj, double sk) {
+    const double cosine = (si * si - sj * sj - sk * sk) / (2 * sj * sk);
+    if (cosine < -1 || cosine > 1) return NAN; // no force balance exists for these tensions
+    return std::acos(cosine) * 180.0 / M_PI;
+}
+
+/// Accumulates angles into stats (min/max/mean computed at the end by finish()).
+struct AngleAccumulator {
+    AngleStats stats;
+    double sum = 0;
+    AngleAccumulator() { stats.min = 360; }
+    void add(double degrees) {
+        stats.min = std::min(stats.min, degrees);
+        stats.max = std::max(stats.max, degrees);
+        sum += degrees;
+        ++stats.count;
+    }
+    AngleStats finish() {
+        stats.mean = stats.count ? sum / stats.count : 0;
+        if (!stats.count) stats.min = 0;
+        return stats;
+    }
+};
+
+double angle_between(const Vec3& a, const Vec3& b) {
+    return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+/// Next vertex along the triple line that leaves v through junction edge e, or -1 at a line end.
+int next_on_line(const Cluster& c, int v, int e) {
+    const JunctionEdge& edge = c.junction_edges()[e];
+    const int w = edge.a == v ? edge.b : edge.a;
+    const std::vector<int> at = c.vertex_junction_edges(w);
+    if (at.size() != 2) return -1;
+    const int f = at[0] == e ? at[1] : at[0];
+    if (c.junction_edges()[f].surfaces != edge.surfaces) return -1;
+    const JunctionEdge& g = c.junction_edges()[f];
+    return g.a == w ? g.b : g.a;
+}
+
 } // namespace
 
 AngleStats triple_line_angles(const Cluster& c) {
     const PairFacets pf = pair_facets(c);
-    AngleStats stats;
-    stats.min = 360;
-    double sum = 0;
+    AngleAccumulator acc;
     for (int v = 0; v < c.n_vertices(); ++v) {
         const std::vector<int> edges = c.vertex_junction_edges(v);
         if (edges.size() != 2) continue; // not on a line, or a quadruple point / line end
@@ -84,6 +123,7 @@ AngleStats triple_line_angles(const Cluster& c) {
         const int prev = e0.a == v ? e0.b : e0.a, next = e1.a == v ? e1.b : e1.a;
         const Vec3 t = (c.position(next) - c.position(prev)).normalized();
         Vec3 dir[3];
+        double sigma[3];
         for (int j = 0; j < 3; ++j) {
             // chord directions into the film from the facets at both line edges, averaged
             Vec3 chord = Vec3::Zero();
@@ -93,19 +133,41 @@ AngleStats triple_line_angles(const Cluster& c) {
             }
             chord = (chord - chord.dot(t) * t).normalized();
             dir[j] = film_direction(c, two_ring(c, pf, v, e0.surfaces[j]), v, t, chord);
+            sigma[j] = c.surface(e0.surfaces[j]).sigma;
         }
         for (int j = 0; j < 3; ++j) {
-            const double cosine = std::clamp(dir[j].dot(dir[(j + 1) % 3]), -1.0, 1.0);
-            const double angle = std::acos(cosine) * 180.0 / M_PI;
-            stats.min = std::min(stats.min, angle);
-            stats.max = std::max(stats.max, angle);
-            sum += angle;
-            ++stats.count;
+            const int k = (j + 1) % 3, i = (j + 2) % 3; // film i is opposite the angle (j, k)
+            const double angle = angle_between(dir[j], dir[k]);
+            acc.add(angle);
+            const double error = std::abs(angle - young_angle(sigma[i], sigma[j], sigma[k]));
+            acc.stats.young_error = std::isnan(error) ? NAN : std::max(acc.stats.young_error, error);
         }
     }
-    stats.mean = stats.count ? sum / stats.count : 0;
-    if (!stats.count) stats.min = 0;
-    return stats;
+    return acc.finish();
+}
+
+AngleStats quadruple_point_angles(const Cluster& c) {
+    AngleAccumulator acc;
+    for (int q : c.quadruple_points()) {
+        std::vector<Vec3> dirs;
+        for (int e : c.vertex_junction_edges(q)) {
+            const JunctionEdge& edge = c.junction_edges()[e];
+            const int p1 = edge.a == q ? edge.b : edge.a;
+            const Vec3 d1 = c.position(p1) - c.position(q);
+            const int p2 = next_on_line(c, q, e);
+            if (p2 < 0) {
+                dirs.push_back(d1.normalized());
+                continue;
+            }
+            // derivative at s = 0 of the quadratic through (0, 0), (s1, d1), (s2, d2)
+            const Vec3 d2 = c.position(p2) - c.position(q);
+            const double s1 = d1.norm(), s2 = s1 + (d2 - d1).norm();
+            dirs.push_back((d1 * s2 / (s1 * (s2 - s1)) - d2 * s1 / (s2 * (s2 - s1))).normalized());
+        }
+        for (std::size_t a = 0; a < dirs.size(); ++a)
+            for (std::size_t b = a + 1; b < dirs.size(); ++b) acc.add(angle_between(dirs[a], dirs[b]));
+    }
+    return acc.finish();
 }
 
 } // namespace froth

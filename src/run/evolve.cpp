@@ -23,6 +23,12 @@ void check_options(const EvolveOptions& o) {
     if (has_T && !(std::isfinite(o.duration) && o.duration > 0))
         throw InvalidInput("evolve: T must be positive and finite");
     if (o.every < 0) throw InvalidInput("evolve: every must be >= 0");
+    const WatchOptions& w = o.watch;
+    if (!(w.min_volume_fraction >= 0 && w.min_volume_fraction < 1) ||
+        !(w.min_edge_fraction >= 0 && w.min_edge_fraction < 1) ||
+        !(w.min_facet_angle >= 0 && w.min_facet_angle < 60) || w.self_intersection_every < 0)
+        throw InvalidInput("evolve: watch thresholds must be fractions in [0, 1), an angle in "
+                           "[0, 60) degrees and a step count >= 0");
 }
 
 std::vector<PointField> output_fields(const Cluster& c) {
@@ -52,6 +58,11 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     r.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
     auto last_draw = Clock::now();
     bool written_last = true;
+    const TopologyWatch watch(o.watch);
+    // The state at the last passed crossing test: a crossing state is not valid, so a run that
+    // finds one returns here.
+    std::vector<Vec3> checkpoint = c.positions();
+    double checkpoint_t = c.time();
     while (r.steps < total) {
         if (consume_interrupt()) {
             r.stop_reason = "interrupted";
@@ -61,7 +72,16 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
         const bool last = o.steps < 0 && r.steps == total - 1;
         const double tau = last ? t_end - c.time() : o.tau;
         if (tau <= 1e-12 * o.tau) break; // T reached up to round-off
-        StepReport s = stepper.step(c, o.flow, tau);
+        StepReport s;
+        try {
+            s = stepper.step(c, o.flow, tau);
+        } catch (const InvalidInput&) {
+            throw;
+        } catch (const Error& e) { // geometric breakdown; the step left the cluster as it was
+            r.event = TopologyEvent{"step failed",
+                                    std::string(e.what()) + " at t = " + fmt(c.time()), c.time()};
+        }
+        if (r.event) break;
         if (last) c.set_time(t_end), s.t = t_end;
         ++r.steps;
         r.solve_seconds += s.solve_seconds;
@@ -69,6 +89,18 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
         r.max_energy_increase = std::max(r.max_energy_increase,
                                          (s.energy - s.energy_before) / s.energy_before);
         written_last = false;
+        if (auto e = watch.check(c, r.steps)) {
+            if (e->kind == "self-intersection") {
+                c.set_positions(checkpoint);
+                c.set_time(checkpoint_t);
+                e->message += "; the state at t = " + fmt(checkpoint_t) +
+                              ", the last one without crossings, is kept";
+                e->t = checkpoint_t;
+            }
+            r.event = std::move(e);
+            break;
+        }
+        if (watch.tests_crossings(r.steps)) checkpoint = c.positions(), checkpoint_t = c.time();
         if (series && o.every > 0 && r.steps % o.every == 0) {
             series->add(c.time(), c, output_fields(c));
             written_last = true;
@@ -82,6 +114,7 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
             break;
         }
     }
+    if (r.event) r.stop_reason = "topology: " + r.event->message;
     if (series && !written_last) series->add(c.time(), c, output_fields(c));
     if (o.progress) std::fprintf(o.progress, "\r%90s\r", ""), std::fflush(o.progress);
     r.last = make_report(c);

@@ -3,6 +3,7 @@
 /// driver layer above the schemes (flows/) and the writers (io/); it never sees Lua.
 
 #include "flows/stepper.h"
+#include "run/topology_watch.h"
 
 #include <cstdio>
 #include <functional>
@@ -20,6 +21,8 @@ struct EvolveOptions {
     std::FILE* progress = nullptr; ///< a terminal to draw a progress line on, or nullptr
     /// Called after every step; returning false stops the evolution.
     std::function<bool(const StepReport&)> on_step;
+    /// What counts as the approach of a topology change (run/topology_watch.h).
+    WatchOptions watch;
 };
 
 struct EvolveResult {
@@ -29,10 +32,14 @@ struct EvolveResult {
     double solve_seconds = 0;        ///< summed over the steps
     int factorizations = 0;          ///< numeric factorisations made (the rest reused one)
     double max_energy_increase = 0;  ///< largest relative energy increase of any step (0 if none)
-    std::string stop_reason;         ///< "T reached", "steps done", "on_step", "interrupted"
+    /// "T reached", "steps done", "on_step", "interrupted", or "topology: <what, where, when>"
+    std::string stop_reason;
+    std::optional<TopologyEvent> event; ///< set when the watch or a failing step stopped the run
 };
 
-/// \throw InvalidInput for bad options; errors of a step propagate (TimeStepper::step), and the
+/// A step that fails geometrically (GeometryError, SolverError: a collapsing facet, a singular
+/// system) or a watch event ends the run with stop_reason "topology: ..." and the last valid
+/// state in place. \throw InvalidInput for bad options; other errors propagate, and the
 /// cluster then holds the state after the last successful step.
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& options);
 

@@ -1,0 +1,88 @@
+#include "run/topology_watch.h"
+
+#include "checks/self_intersection.h"
+#include "core/format.h"
+#include "geometry/geometry.h"
+
+#include <cmath>
+
+namespace froth {
+namespace {
+
+std::string at_time(const Cluster& c) { return " at t = " + fmt(c.time()); }
+
+std::optional<TopologyEvent> vanishing_body(const Cluster& c, double fraction) {
+    const std::vector<double> V = body_volumes(c);
+    for (std::size_t b = 0; b < V.size(); ++b) {
+        const double v0 = c.initial_volumes()[b];
+        if (V[b] < fraction * v0)
+            return TopologyEvent{"vanishing body",
+                                 "body " + std::to_string(b + 1) + " is vanishing: volume " +
+                                     fmt(V[b]) + " of initially " + fmt(v0) + at_time(c),
+                                 c.time()};
+    }
+    return std::nullopt;
+}
+
+std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const WatchOptions& o) {
+    const auto& X = c.positions();
+    double sum = 0, shortest = INFINITY, smallest_angle = 180;
+    long count = 0;
+    int s_edge = 0, f_edge = 0, s_angle = 0, f_angle = 0;
+    for (int i = 0; i < c.n_surfaces(); ++i) {
+        const auto& tris = c.surface(i).triangles;
+        for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 u = X[tris[f][(k + 1) % 3]] - X[tris[f][k]];
+                const Vec3 w = X[tris[f][(k + 2) % 3]] - X[tris[f][k]];
+                const double len = u.norm();
+                sum += len, ++count;
+                if (len < shortest) shortest = len, s_edge = i, f_edge = f;
+                const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
+                if (angle < smallest_angle) smallest_angle = angle, s_angle = i, f_angle = f;
+            }
+    }
+    auto facet = [](int s, int f) {
+        return "facet " + std::to_string(f + 1) + " of surface " + std::to_string(s + 1);
+    };
+    const double mean = sum / count;
+    if (shortest < o.min_edge_fraction * mean)
+        return TopologyEvent{"collapsing edge",
+                             "an edge of " + facet(s_edge, f_edge) + " is collapsing: length " +
+                                 fmt(shortest) + ", mean edge " + fmt(mean) + at_time(c),
+                             c.time()};
+    if (smallest_angle < o.min_facet_angle)
+        return TopologyEvent{"collapsing facet",
+                             facet(s_angle, f_angle) + " is collapsing: corner angle " +
+                                 fmt(smallest_angle) + " degrees" + at_time(c),
+                             c.time()};
+    return std::nullopt;
+}
+
+} // namespace
+
+bool TopologyWatch::tests_crossings(int step) const {
+    const int every = options_.self_intersection_every;
+    return options_.enabled && every > 0 && step % every == 0 && self_intersection_available();
+}
+
+std::optional<TopologyEvent> TopologyWatch::check(const Cluster& c, int step) const {
+    if (!options_.enabled) return std::nullopt;
+    if (auto e = vanishing_body(c, options_.min_volume_fraction)) return e;
+    if (auto e = collapsing_edge_or_facet(c, options_)) return e;
+    if (tests_crossings(step)) {
+        const auto crossings = find_self_intersections(c, 1);
+        if (!crossings.empty()) {
+            const FacetCrossing& x = crossings.front();
+            auto facet = [](const FacetRef& r) {
+                return "facet " + std::to_string(r.facet + 1) + " of surface " +
+                       std::to_string(r.surface + 1);
+            };
+            return TopologyEvent{"self-intersection",
+                                 facet(x.a) + " crosses " + facet(x.b) + at_time(c), c.time()};
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace froth

@@ -1,0 +1,47 @@
+#pragma once
+/// Watching an evolution for the approach of a topology change (pinch-off, a tearing ring, a
+/// vanishing bubble), which the parametric method cannot pass (seed §5.1: t ~ 26.61, 0.91,
+/// 0.178). The watch looks for the signs that precede one and names what, where and when.
+
+#include "mesh/cluster.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace froth {
+
+struct WatchOptions {
+    bool enabled = true;
+    /// A body whose volume falls below this fraction of its initial volume is vanishing.
+    double min_volume_fraction = 1e-3;
+    /// An edge shorter than this fraction of the mean edge length is collapsing (a neck or a
+    /// shrinking film concentrates short edges; a uniformly shrinking cluster does not).
+    double min_edge_fraction = 0.02;
+    /// A facet corner angle below this (degrees) means a facet is collapsing.
+    double min_facet_angle = 0.5;
+    /// Test for crossing facets (CGAL) every this many steps; 0 never.
+    int self_intersection_every = 10;
+};
+
+struct TopologyEvent {
+    std::string kind;    ///< "vanishing body", "collapsing edge", "collapsing facet", "self-intersection"
+    std::string message; ///< what, where and when, for people
+    double t = 0;        ///< model time of the state that is kept
+};
+
+class TopologyWatch {
+  public:
+    explicit TopologyWatch(WatchOptions options) : options_(options) {}
+    /// Checks the cluster after step number `step` (1-based). Cheap checks every step; the
+    /// self-intersection test every options.self_intersection_every steps.
+    std::optional<TopologyEvent> check(const Cluster& c, int step) const;
+    /// True if this step will run the self-intersection test (the caller keeps a state to
+    /// return to, since a crossing state is not a valid one).
+    bool tests_crossings(int step) const;
+
+  private:
+    WatchOptions options_;
+};
+
+} // namespace froth
