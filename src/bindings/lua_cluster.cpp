@@ -171,6 +171,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     if (o.has("steps") && e.steps < 0) o.error("steps", "must be >= 0");
     e.every = static_cast<int>(o.integer("every", 0));
     e.output = o.string("output", "");
+    e.history = o.string("history", "");
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
     e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;
     if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/interrupt.h"
+#include "io/history.h"
 #include "io/vtk_writer.h"
 
 #include <algorithm>
@@ -29,6 +30,13 @@ void check_options(const EvolveOptions& o) {
         !(w.min_facet_angle >= 0 && w.min_facet_angle < 60) || w.self_intersection_every < 0)
         throw InvalidInput("evolve: watch thresholds must be fractions in [0, 1), an angle in "
                            "[0, 60) degrees and a step count >= 0");
+}
+
+HistoryRow history_row(const Report& r) { return {r.t, r.energy, r.volume_loss, r.volumes}; }
+
+void write_history(const std::string& stem, const std::vector<HistoryRow>& rows) {
+    write_history_csv(stem + ".csv", rows);
+    write_history_svg(stem + ".svg", rows, "froth: energy over time");
 }
 
 std::vector<PointField> output_fields(const Cluster& c) {
@@ -59,6 +67,8 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     auto last_draw = Clock::now();
     bool written_last = true;
     const TopologyWatch watch(o.watch);
+    std::vector<HistoryRow> history;
+    if (!o.history.empty()) history.push_back(history_row(make_report(c)));
     // The state at the last passed crossing test: a crossing state is not valid, so a run that
     // finds one returns here.
     std::vector<Vec3> checkpoint = c.positions();
@@ -89,6 +99,7 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
         r.max_energy_increase = std::max(r.max_energy_increase,
                                          (s.energy - s.energy_before) / s.energy_before);
         written_last = false;
+        if (!o.history.empty()) history.push_back(history_row(s));
         if (auto e = watch.check(c, r.steps)) {
             if (e->kind == "self-intersection") {
                 c.set_positions(checkpoint);
@@ -116,6 +127,11 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     }
     if (r.event) r.stop_reason = "topology: " + r.event->message;
     if (series && !written_last) series->add(c.time(), c, output_fields(c));
+    if (!o.history.empty()) {
+        if (r.event && r.event->kind == "self-intersection") // the kept state is earlier
+            while (history.size() > 1 && history.back().t > c.time()) history.pop_back();
+        write_history(o.history, history);
+    }
     if (o.progress) std::fprintf(o.progress, "\r%90s\r", ""), std::fflush(o.progress);
     r.last = make_report(c);
     r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();

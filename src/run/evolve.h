@@ -18,6 +18,9 @@ struct EvolveOptions {
     int steps = -1;        ///< or for this many steps (exactly one of duration/steps is set)
     int every = 0;         ///< write a snapshot every `every` steps (0: first and last only)
     std::string output;    ///< ".pvd" path of a ParaView series; empty: no output
+    /// Record t, energy and volumes of every step and write them to <history>.csv and an
+    /// energy plot to <history>.svg at the end; empty: no history.
+    std::string history;
     std::FILE* progress = nullptr; ///< a terminal to draw a progress line on, or nullptr
     /// Called after every step; returning false stops the evolution.
     std::function<bool(const StepReport&)> on_step;
