@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 namespace froth {
 namespace {
@@ -24,6 +25,8 @@ void check_options(const EvolveOptions& o) {
     if (has_T && !(std::isfinite(o.duration) && o.duration > 0))
         throw InvalidInput("evolve: T must be positive and finite");
     if (o.every < 0) throw InvalidInput("evolve: every must be >= 0");
+    if (has_T && o.duration / o.tau > 1e9)
+        throw InvalidInput("evolve: T / tau = " + fmt(o.duration / o.tau) + " steps is too many");
     const WatchOptions& w = o.watch;
     if (!(w.min_volume_fraction >= 0 && w.min_volume_fraction < 1) ||
         !(w.min_edge_fraction >= 0 && w.min_edge_fraction < 1) ||
@@ -49,93 +52,139 @@ void draw_progress(std::FILE* out, const EvolveResult& r, const StepReport& s, d
     std::fflush(out);
 }
 
+/// One evolution: the loop of evolve() split into its parts.
+class Run {
+  public:
+    Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o)
+        : c_(c), stepper_(stepper), o_(o), watch_(o.watch), t_end_(c.time() + o.duration),
+          total_(o.steps >= 0 ? o.steps : static_cast<int>(std::ceil(o.duration / o.tau - 1e-9))),
+          checkpoint_(c.positions()), checkpoint_t_(c.time()) {
+        r_.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
+        if (!o.output.empty()) {
+            series_ = std::make_unique<PvdSeries>(o.output);
+            series_->add(c.time(), c, output_fields(c));
+        }
+        if (!o.history.empty()) history_.push_back(history_row(make_report(c)));
+    }
+
+    /// Takes one step and everything that follows it; false ends the run.
+    bool advance() {
+        if (r_.steps >= total_) return false;
+        if (consume_interrupt()) {
+            r_.stop_reason = "interrupted";
+            return false;
+        }
+        // The last step of a T-run ends exactly at t_end, whatever the summed round-off.
+        const bool last = o_.steps < 0 && r_.steps == total_ - 1;
+        const double tau = last ? t_end_ - c_.time() : o_.tau;
+        if (tau <= 1e-12 * o_.tau) return false; // T reached up to round-off
+        std::optional<StepReport> s = try_step(tau);
+        if (!s) return false;
+        if (last) c_.set_time(t_end_), s->t = t_end_;
+        record(*s);
+        if (watch_for_topology()) return false;
+        write_output(*s);
+        if (o_.on_step && !o_.on_step(*s)) {
+            r_.stop_reason = "on_step";
+            return false;
+        }
+        return true;
+    }
+
+    EvolveResult finish(Clock::time_point start) {
+        if (r_.event) r_.stop_reason = "topology: " + r_.event->message;
+        if (series_ && !written_last_) series_->add(c_.time(), c_, output_fields(c_));
+        if (!o_.history.empty()) {
+            while (history_.size() > 1 && history_.back().t > c_.time()) // after a crossing
+                history_.pop_back();
+            write_history(o_.history, history_);
+        }
+        if (o_.progress) std::fprintf(o_.progress, "\r%90s\r", ""), std::fflush(o_.progress);
+        r_.last = make_report(c_);
+        r_.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        return std::move(r_);
+    }
+
+  private:
+    /// A step that fails geometrically ends the run as a topology event; the step has left
+    /// the cluster as it was. Bad input still throws.
+    std::optional<StepReport> try_step(double tau) {
+        try {
+            return stepper_.step(c_, o_.flow, tau);
+        } catch (const InvalidInput&) {
+            throw;
+        } catch (const Error& e) {
+            r_.event = TopologyEvent{"step failed",
+                                     std::string(e.what()) + " at t = " + fmt(c_.time()), c_.time()};
+            return std::nullopt;
+        }
+    }
+
+    void record(const StepReport& s) {
+        ++r_.steps;
+        r_.solve_seconds += s.solve_seconds;
+        r_.factorizations += s.refactorized;
+        r_.max_energy_increase =
+            std::max(r_.max_energy_increase, (s.energy - s.energy_before) / s.energy_before);
+        written_last_ = false;
+        if (!o_.history.empty()) history_.push_back(history_row(s));
+    }
+
+    /// True if the watch saw a topology change coming; a crossing state is not a valid one, so
+    /// then the cluster returns to the last state that passed the crossing test.
+    bool watch_for_topology() {
+        std::optional<TopologyEvent> e = watch_.check(c_, r_.steps);
+        if (!e) {
+            if (watch_.tests_crossings(r_.steps)) checkpoint_ = c_.positions(), checkpoint_t_ = c_.time();
+            return false;
+        }
+        if (e->kind == "self-intersection") {
+            c_.set_positions(checkpoint_);
+            c_.set_time(checkpoint_t_);
+            e->message += "; the state at t = " + fmt(checkpoint_t_) +
+                          ", the last one without crossings, is kept";
+            e->t = checkpoint_t_;
+        }
+        r_.event = std::move(e);
+        return true;
+    }
+
+    void write_output(const StepReport& s) {
+        if (series_ && o_.every > 0 && r_.steps % o_.every == 0) {
+            series_->add(c_.time(), c_, output_fields(c_));
+            written_last_ = true;
+        }
+        if (o_.progress && std::chrono::duration<double>(Clock::now() - last_draw_).count() > 0.25) {
+            draw_progress(o_.progress, r_, s, static_cast<double>(r_.steps) / total_);
+            last_draw_ = Clock::now();
+        }
+    }
+
+    Cluster& c_;
+    TimeStepper& stepper_;
+    const EvolveOptions& o_;
+    const TopologyWatch watch_;
+    const double t_end_;
+    const int total_;
+    EvolveResult r_;
+    std::unique_ptr<PvdSeries> series_;
+    std::vector<HistoryRow> history_;
+    std::vector<Vec3> checkpoint_;
+    double checkpoint_t_;
+    bool written_last_ = true;
+    Clock::time_point last_draw_ = Clock::now();
+};
+
 } // namespace
 
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     check_options(o);
     const EngineLoopScope polling; // Ctrl-C is served between steps, also inside on_step
     const auto start = Clock::now();
-    const double t_end = c.time() + o.duration;
-    const int total = o.steps >= 0 ? o.steps : static_cast<int>(std::ceil(o.duration / o.tau - 1e-9));
-    std::unique_ptr<PvdSeries> series;
-    if (!o.output.empty()) {
-        series = std::make_unique<PvdSeries>(o.output);
-        series->add(c.time(), c, output_fields(c));
+    Run run(c, stepper, o);
+    while (run.advance()) {
     }
-    EvolveResult r;
-    r.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
-    auto last_draw = Clock::now();
-    bool written_last = true;
-    const TopologyWatch watch(o.watch);
-    std::vector<HistoryRow> history;
-    if (!o.history.empty()) history.push_back(history_row(make_report(c)));
-    // The state at the last passed crossing test: a crossing state is not valid, so a run that
-    // finds one returns here.
-    std::vector<Vec3> checkpoint = c.positions();
-    double checkpoint_t = c.time();
-    while (r.steps < total) {
-        if (consume_interrupt()) {
-            r.stop_reason = "interrupted";
-            break;
-        }
-        // The last step of a T-run ends exactly at t_end, whatever the summed round-off.
-        const bool last = o.steps < 0 && r.steps == total - 1;
-        const double tau = last ? t_end - c.time() : o.tau;
-        if (tau <= 1e-12 * o.tau) break; // T reached up to round-off
-        StepReport s;
-        try {
-            s = stepper.step(c, o.flow, tau);
-        } catch (const InvalidInput&) {
-            throw;
-        } catch (const Error& e) { // geometric breakdown; the step left the cluster as it was
-            r.event = TopologyEvent{"step failed",
-                                    std::string(e.what()) + " at t = " + fmt(c.time()), c.time()};
-        }
-        if (r.event) break;
-        if (last) c.set_time(t_end), s.t = t_end;
-        ++r.steps;
-        r.solve_seconds += s.solve_seconds;
-        r.factorizations += s.refactorized;
-        r.max_energy_increase = std::max(r.max_energy_increase,
-                                         (s.energy - s.energy_before) / s.energy_before);
-        written_last = false;
-        if (!o.history.empty()) history.push_back(history_row(s));
-        if (auto e = watch.check(c, r.steps)) {
-            if (e->kind == "self-intersection") {
-                c.set_positions(checkpoint);
-                c.set_time(checkpoint_t);
-                e->message += "; the state at t = " + fmt(checkpoint_t) +
-                              ", the last one without crossings, is kept";
-                e->t = checkpoint_t;
-            }
-            r.event = std::move(e);
-            break;
-        }
-        if (watch.tests_crossings(r.steps)) checkpoint = c.positions(), checkpoint_t = c.time();
-        if (series && o.every > 0 && r.steps % o.every == 0) {
-            series->add(c.time(), c, output_fields(c));
-            written_last = true;
-        }
-        if (o.progress && std::chrono::duration<double>(Clock::now() - last_draw).count() > 0.25) {
-            draw_progress(o.progress, r, s, static_cast<double>(r.steps) / total);
-            last_draw = Clock::now();
-        }
-        if (o.on_step && !o.on_step(s)) {
-            r.stop_reason = "on_step";
-            break;
-        }
-    }
-    if (r.event) r.stop_reason = "topology: " + r.event->message;
-    if (series && !written_last) series->add(c.time(), c, output_fields(c));
-    if (!o.history.empty()) {
-        if (r.event && r.event->kind == "self-intersection") // the kept state is earlier
-            while (history.size() > 1 && history.back().t > c.time()) history.pop_back();
-        write_history(o.history, history);
-    }
-    if (o.progress) std::fprintf(o.progress, "\r%90s\r", ""), std::fflush(o.progress);
-    r.last = make_report(c);
-    r.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    return r;
+    return run.finish(start);
 }
 
 } // namespace froth
