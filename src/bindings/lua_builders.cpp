@@ -1,11 +1,13 @@
 // Cluster constructors: froth.cluster{...} from plain Lua tables, and (with gmsh) the meshed
-// builders froth.double_bubble, froth.sphere and froth.read.
+// builders froth.double_bubble, froth.sphere, froth.read and froth.fragment, plus the named
+// clusters of lua/froth/clusters.lua (froth.torus_bubble, ...) built on froth.fragment.
 #include "bindings/lua_builders.h"
 
 #include "bindings/lua_cluster.h"
 #include "bindings/luax.h"
 
 #ifdef FROTH_HAVE_GMSH
+#include "builders/fragment.h"
 #include "builders/gmsh_builder.h"
 #endif
 
@@ -196,6 +198,215 @@ int l_read(lua_State* L) {
         return 1;
     });
 }
+
+// ---- froth.fragment -------------------------------------------------------------------------
+
+/// Reads option key as {x, y, z}; absent: fallback.
+Vec3 vec3_option(lua_State* L, Options& o, const char* key, const Vec3& fallback,
+                 const std::string& who) {
+    Vec3 v = fallback;
+    const int t = o.push(key);
+    if (t == LUA_TTABLE && luaL_len(L, -1) == 3) {
+        for (int d = 0; d < 3; ++d) {
+            if (lua_rawgeti(L, -1, d + 1) != LUA_TNUMBER)
+                luaL_error(L, "%s: %s must be {x, y, z}", who.c_str(), key);
+            v[d] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "%s: %s must be {x, y, z}", who.c_str(), key);
+    }
+    lua_pop(L, 1);
+    return v;
+}
+
+Vec3 required_vec3(lua_State* L, Options& o, const char* key, const std::string& who) {
+    if (!o.has(key)) o.error(key, "is required");
+    return vec3_option(L, o, key, Vec3::Zero(), who);
+}
+
+/// rotate = {axis = {x, y, z}, angle = radians}
+void read_rotate(lua_State* L, Options& o, Solid& s, const std::string& who) {
+    const int t = o.push("rotate");
+    if (t == LUA_TTABLE) {
+        const std::string rwho = who + ": rotate";
+        Options r(L, lua_gettop(L), rwho.c_str());
+        s.rotate_axis = vec3_option(L, r, "axis", Vec3::UnitZ(), rwho);
+        s.rotate_angle = r.number("angle");
+        r.finish();
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "%s: rotate must be a table {axis = {x, y, z}, angle = radians}",
+                   who.c_str());
+    }
+    lua_pop(L, 1);
+}
+
+/// scale = number (uniform) or {sx, sy, sz}
+void read_scale(lua_State* L, Options& o, Solid& s, const std::string& who) {
+    const int t = o.push("scale");
+    const bool vector = t == LUA_TTABLE && luaL_len(L, -1) == 3;
+    if (t == LUA_TNUMBER) s.scale = Vec3::Constant(lua_tonumber(L, -1));
+    lua_pop(L, 1);
+    if (vector) s.scale = vec3_option(L, o, "scale", Vec3::Ones(), who);
+    if (t != LUA_TNIL && t != LUA_TNUMBER && !vector)
+        luaL_error(L, "%s: scale must be a number or {sx, sy, sz}", who.c_str());
+}
+
+void read_kind_fields(lua_State* L, Options& o, Solid& s, const std::string& who) {
+    switch (s.kind) {
+    case SolidKind::ball:
+        s.center = vec3_option(L, o, "center", Vec3::Zero(), who);
+        s.r = o.number("r");
+        s.angle = o.number("angle", s.angle);
+        break;
+    case SolidKind::box:
+        s.min = required_vec3(L, o, "min", who);
+        if (o.has("max") == o.has("size"))
+            luaL_error(L, "%s: give exactly one of max and size", who.c_str());
+        s.size = o.has("max") ? Vec3(vec3_option(L, o, "max", Vec3::Zero(), who) - s.min)
+                              : vec3_option(L, o, "size", Vec3::Ones(), who);
+        break;
+    case SolidKind::cylinder:
+        s.base = vec3_option(L, o, "base", Vec3::Zero(), who);
+        s.axis = required_vec3(L, o, "axis", who);
+        s.r = o.number("r");
+        break;
+    case SolidKind::torus:
+        s.center = vec3_option(L, o, "center", Vec3::Zero(), who);
+        s.R = o.number("R");
+        s.r = o.number("r");
+        s.axis = vec3_option(L, o, "axis", Vec3::UnitZ(), who);
+        break;
+    }
+}
+
+SolidKind solid_kind(lua_State* L, int idx, int k) {
+    if (lua_rawgeti(L, idx, 1) != LUA_TSTRING)
+        luaL_error(L,
+                   "fragment: solids[%d] must start with its kind: \"ball\", \"box\", "
+                   "\"cylinder\" or \"torus\"",
+                   k);
+    const std::string name = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    for (SolidKind kind : {SolidKind::ball, SolidKind::box, SolidKind::cylinder, SolidKind::torus})
+        if (name == solid_kind_name(kind)) return kind;
+    luaL_error(L,
+               "fragment: solids[%d]: unknown solid kind '%s' (known: ball, box, cylinder, "
+               "torus)",
+               k, name.c_str());
+    return SolidKind::ball; // not reached
+}
+
+/// solids[k] = {"ball", center = {...}, r = 1, translate = ..., h = ...}
+Solid read_solid(lua_State* L, int idx, int k) {
+    if (!lua_istable(L, idx))
+        luaL_error(L, "fragment: solids[%d] must be a table such as {\"ball\", r = 1}, got %s", k,
+                   luaL_typename(L, idx));
+    Solid s;
+    s.kind = solid_kind(L, idx, k);
+    const std::string who =
+        "fragment: solids[" + std::to_string(k) + "] (" + solid_kind_name(s.kind) + ")";
+    lua_newtable(L); // the keys without the kind at [1], so that Options sees only names
+    const int copy = lua_gettop(L);
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        if (lua_isinteger(L, -2) && lua_tointeger(L, -2) == 1) {
+            lua_pop(L, 1);
+            continue;
+        }
+        lua_pushvalue(L, -2);
+        lua_insert(L, -2);
+        lua_rawset(L, copy);
+    }
+    Options o(L, copy, who.c_str());
+    read_kind_fields(L, o, s, who);
+    s.translate = vec3_option(L, o, "translate", Vec3::Zero(), who);
+    read_rotate(L, o, s, who);
+    read_scale(L, o, s, who);
+    if (o.has("h")) s.h = o.number("h");
+    o.finish();
+    lua_pop(L, 1);
+    return s;
+}
+
+/// sigma = number, or a table {[id] = sigma, ...} (an array lists them all).
+void read_fragment_sigma(lua_State* L, Options& o, FragmentOptions& f) {
+    const int t = o.push("sigma");
+    if (t == LUA_TNUMBER) {
+        f.sigma = lua_tonumber(L, -1);
+    } else if (t == LUA_TTABLE) {
+        lua_pushnil(L);
+        while (lua_next(L, -2)) {
+            if (!lua_isinteger(L, -2) || lua_tointeger(L, -2) < 1 || lua_tointeger(L, -2) > INT_MAX)
+                luaL_error(L, "fragment: sigma keys must be surface ids 1, 2, ...");
+            const int id = static_cast<int>(lua_tointeger(L, -2));
+            if (lua_type(L, -1) != LUA_TNUMBER)
+                luaL_error(L, "fragment: sigma[%d] must be a number", id);
+            f.sigma_of[id - 1] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+    } else if (t != LUA_TNIL) {
+        luaL_error(L, "fragment: option 'sigma' must be a number or a table {[surface] = sigma}");
+    }
+    lua_pop(L, 1);
+}
+
+/// Calls fn(x, y, z) -> x, y, z on every vertex (outside any gmsh session).
+void apply_transform(lua_State* L, int fn, std::vector<Vec3>& X) {
+    for (Vec3& x : X) {
+        lua_pushvalue(L, fn);
+        for (int d = 0; d < 3; ++d)
+            lua_pushnumber(L, x[d]);
+        lua_call(L, 3, 3);
+        for (int d = 0; d < 3; ++d) {
+            if (lua_type(L, d - 3) != LUA_TNUMBER)
+                luaL_error(L, "fragment: transform must return 3 numbers x, y, z");
+            x[d] = lua_tonumber(L, d - 3);
+        }
+        lua_pop(L, 3);
+    }
+}
+
+int l_fragment(lua_State* L) {
+    Options o(L, 1, "fragment");
+    FragmentOptions f;
+    if (o.push("solids") != LUA_TTABLE)
+        luaL_error(L, "fragment: option 'solids' must be a table of solids, got %s",
+                   luaL_typename(L, -1));
+    const int solids = lua_gettop(L);
+    for (int k = 1; k <= luaL_len(L, solids); ++k) {
+        lua_rawgeti(L, solids, k);
+        f.solids.push_back(read_solid(L, lua_gettop(L), k));
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    if (o.has("h")) f.h = o.number("h");
+    if (o.has("vertices")) {
+        if (o.has("h")) luaL_error(L, "fragment: give h or vertices, not both");
+        const long long n = o.integer("vertices");
+        if (n < 100 || n > static_cast<long long>(f.max_vertices))
+            luaL_error(L, "fragment: vertices must be in [100, %d], got %I",
+                       static_cast<int>(f.max_vertices), static_cast<LUAI_UACINT>(n));
+        f.default_vertices = static_cast<std::size_t>(n);
+    }
+    read_fragment_sigma(L, o, f);
+    const int t = o.push("transform");
+    if (t != LUA_TNIL && t != LUA_TFUNCTION)
+        luaL_error(L, "fragment: option 'transform' must be a function (x, y, z) -> x, y, z");
+    lua_pop(L, 1);
+    o.finish();
+    ClusterSpec spec;
+    guarded(L, [&] {
+        spec = build_fragment(f);
+        return 0;
+    });
+    if (lua_getfield(L, 1, "transform") == LUA_TFUNCTION)
+        apply_transform(L, lua_gettop(L), spec.vertices);
+    return guarded(L, [&] {
+        push_cluster(L, std::move(spec));
+        return 1;
+    });
+}
 #endif
 
 int l_has(lua_State* L) {
@@ -222,13 +433,42 @@ const luaL_Reg functions[] = {
     {"double_bubble", l_double_bubble},
     {"sphere", l_sphere},
     {"read", l_read},
+    {"fragment", l_fragment},
 #endif
     {"has", l_has},
     {nullptr, nullptr},
 };
 
+#ifdef FROTH_HAVE_GMSH
+// The named clusters (froth.torus_bubble, ...) are Lua, lua/froth/clusters.lua, on top of
+// froth.fragment; they are copied into the froth table so that no script has to require them.
+// A missing module is an error at startup rather than a silently missing builder.
+void add_named_clusters(lua_State* L, int froth) {
+    lua_getglobal(L, "require");
+    lua_pushstring(L, "froth.clusters");
+    lua_call(L, 1, 1);
+    if (!lua_istable(L, -1)) luaL_error(L, "froth.clusters must return a table of builders");
+    lua_pushnil(L);
+    while (lua_next(L, -2)) {
+        if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
+            lua_pushvalue(L, -2);
+            lua_insert(L, -2);
+            lua_rawset(L, froth);
+        } else {
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 1);
+}
+#endif
+
 } // namespace
 
-void add_builders(lua_State* L) { luaL_setfuncs(L, functions, 0); }
+void add_builders(lua_State* L) {
+    luaL_setfuncs(L, functions, 0);
+#ifdef FROTH_HAVE_GMSH
+    add_named_clusters(L, lua_gettop(L));
+#endif
+}
 
 } // namespace froth::lua

@@ -1,6 +1,7 @@
-// gmsh builders (double bubble, sphere), read_msh and write_msh.
+// gmsh builders (double bubble, sphere, fragment), read_msh and write_msh.
 // Links: froth::builders froth::io GTest::gtest_main.
 
+#include "builders/fragment.h"
 #include "builders/gmsh_builder.h"
 #include "core/errors.h"
 #include "io/msh_writer.h"
@@ -9,6 +10,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -253,3 +256,238 @@ TEST(Msh, UnwritablePathThrowsIoError) {
 }
 
 } // namespace
+
+// ---- fragment (builders/fragment.h) ----------------------------------------------------------
+
+namespace {
+
+using froth::Solid;
+using froth::SolidKind;
+
+Solid ball(froth::Vec3 c, double r) {
+    Solid s;
+    s.kind = SolidKind::ball;
+    s.center = c;
+    s.r = r;
+    return s;
+}
+
+Solid box(froth::Vec3 min, froth::Vec3 size) {
+    Solid s;
+    s.kind = SolidKind::box;
+    s.min = min;
+    s.size = size;
+    return s;
+}
+
+froth::FragmentOptions fragment_of(std::vector<Solid> solids, double h) {
+    froth::FragmentOptions o;
+    o.solids = std::move(solids);
+    o.h = h;
+    return o;
+}
+
+// Volume of the union of balls {(center, r)} by exact x-intervals on a midpoint grid in (y, z):
+// an independent reference for the bodies "solid minus the solids before it".
+double union_volume(const std::vector<std::pair<froth::Vec3, double>>& balls, int n = 600) {
+    froth::Vec3 lo = froth::Vec3::Constant(1e300), hi = -lo;
+    for (auto [c, r] : balls) {
+        lo = lo.cwiseMin(c - froth::Vec3::Constant(r));
+        hi = hi.cwiseMax(c + froth::Vec3::Constant(r));
+    }
+    const double dy = (hi.y() - lo.y()) / n, dz = (hi.z() - lo.z()) / n;
+    double v = 0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double y = lo.y() + (i + 0.5) * dy, z = lo.z() + (j + 0.5) * dz;
+            std::vector<std::pair<double, double>> iv;
+            for (auto [c, r] : balls) {
+                const double q = r * r - (y - c.y()) * (y - c.y()) - (z - c.z()) * (z - c.z());
+                if (q > 0) iv.emplace_back(c.x() - std::sqrt(q), c.x() + std::sqrt(q));
+            }
+            std::sort(iv.begin(), iv.end());
+            double end = -1e300;
+            for (auto [a, b] : iv) {
+                v += std::max(0.0, b - std::max(a, end)) * dy * dz;
+                end = std::max(end, b);
+            }
+        }
+    return v;
+}
+
+std::string fragment_error(const froth::FragmentOptions& o) {
+    try {
+        froth::build_fragment(o);
+    } catch (const froth::InvalidInput& e) {
+        return e.what();
+    }
+    return "no InvalidInput";
+}
+
+} // namespace
+
+// dependencies.md §3 "three_spheres": b1 = A, b2 = B\A, b3 = C\(A u B).
+TEST(Fragment, ThreeOverlappingBallsGiveThreeBodiesAndTwoQuadruplePoints) {
+    const froth::Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, 0.8, 0);
+    Cluster cl(froth::build_fragment(fragment_of({ball(a, 1), ball(b, 1), ball(c, 1)}, 0.12)));
+    EXPECT_EQ(cl.n_bodies(), 3);
+    EXPECT_EQ(cl.n_surfaces(), 6); // pairs (0,1) (0,2) (0,3) (1,2) (1,3) (2,3)
+    EXPECT_EQ(cl.triple_lines().size(), 4u);
+    EXPECT_EQ(cl.quadruple_points().size(), 2u);
+    const double v1 = union_volume({{a, 1}}), v12 = union_volume({{a, 1}, {b, 1}}),
+                 v123 = union_volume({{a, 1}, {b, 1}, {c, 1}});
+    EXPECT_NEAR(body_volume(cl, 0), v1, 0.015 * v1);
+    EXPECT_NEAR(body_volume(cl, 1), v12 - v1, 0.015 * (v12 - v1));
+    EXPECT_NEAR(body_volume(cl, 2), v123 - v12, 0.02 * (v123 - v12));
+    // the two quadruple points lie on all three spheres
+    for (int q : cl.quadruple_points())
+        for (const froth::Vec3& centre : {a, b, c})
+            EXPECT_NEAR((cl.position(q) - centre).norm(), 1.0, 1e-6);
+}
+
+// A box with a ball over the middle of its top face: the ball's body is the half ball above it.
+TEST(Fragment, BoxWithBallOnAFace) {
+    Cluster cl(froth::build_fragment(
+        fragment_of({box({-1, -1, -1}, {2, 2, 2}), ball({0, 0, 1}, 0.6)}, 0.1)));
+    ASSERT_EQ(cl.n_surfaces(), 3);
+    EXPECT_EQ(cl.n_bodies(), 2);
+    EXPECT_EQ(cl.triple_lines().size(), 1u);
+    EXPECT_TRUE(cl.quadruple_points().empty());
+    EXPECT_NEAR(body_volume(cl, 0), 8.0, 1e-9); // flat faces: the mesh is exact
+    const double half = 2 * std::numbers::pi * 0.216 / 3;
+    EXPECT_NEAR(body_volume(cl, 1), half, 0.015 * half);
+    // order by region pair: 1 = (outside, box), 2 = (outside, ball), 3 = (box, ball)
+    for (int v : cl.surface(2).vertices)
+        EXPECT_NEAR(cl.position(v).z(), 1.0, 1e-9);
+    for (int v : cl.surface(1).vertices)
+        EXPECT_GE(cl.position(v).z(), 1.0 - 1e-9);
+}
+
+// Seed §5.1.3: two 2x1x1 cuboids and two unit cubes stacked: 9 surfaces, 8 triple lines,
+// 4 quadruple points; flat faces, so the volumes are exact.
+TEST(Fragment, QuadrupleBubbleOfBoxes) {
+    froth::FragmentOptions o = fragment_of({box({0, 0, 0}, {2, 1, 1}), box({0, 0, 1}, {1, 1, 1}),
+                                            box({1, 0, 1}, {1, 1, 1}), box({0, 0, 2}, {2, 1, 1})},
+                                           0.2);
+    o.sigma_of[4] = 1.5; // surface 5 = (body 1, body 2)
+    Cluster cl(froth::build_fragment(o));
+    EXPECT_EQ(cl.n_surfaces(), 9);
+    EXPECT_EQ(cl.triple_lines().size(), 8u);
+    EXPECT_EQ(cl.quadruple_points().size(), 4u);
+    const double expected[4] = {2, 1, 1, 2};
+    for (int b = 0; b < 4; ++b)
+        EXPECT_NEAR(body_volume(cl, b), expected[b], 1e-9) << "body " << b + 1;
+    EXPECT_EQ(cl.surface(4).sigma, 1.5);
+    EXPECT_EQ(cl.surface(3).sigma, 1.0);
+    for (int v : cl.surface(4).vertices) { // the wall between the bottom cuboid and cube 1
+        EXPECT_NEAR(cl.position(v).z(), 1.0, 1e-9);
+        EXPECT_LE(cl.position(v).x(), 1.0 + 1e-9);
+    }
+}
+
+// Seed §5.1.2: three analytic 120-degree wedges of the unit ball.
+TEST(Fragment, TripleBubbleFromWedges) {
+    std::vector<Solid> wedges;
+    for (int k = 0; k < 3; ++k) {
+        Solid w = ball({0, 0, 0}, 1);
+        w.angle = 2 * std::numbers::pi / 3;
+        w.rotate_angle = 2 * std::numbers::pi * k / 3;
+        wedges.push_back(w);
+    }
+    Cluster cl(froth::build_fragment(fragment_of(wedges, 0.15)));
+    EXPECT_EQ(cl.n_surfaces(), 6);
+    EXPECT_EQ(cl.triple_lines().size(), 4u);
+    EXPECT_EQ(cl.quadruple_points().size(), 2u);
+    const double third = 4 * std::numbers::pi / 9;
+    for (int b = 0; b < 3; ++b)
+        EXPECT_NEAR(body_volume(cl, b), third, 0.01 * third);
+    // body 1 = {1, 4, 5}: its lune and the walls at azimuth 120 and 0 degrees
+    ASSERT_EQ(cl.bodies()[0].faces.size(), 3u);
+    EXPECT_EQ(cl.bodies()[0].faces[0].surface, 0);
+    EXPECT_EQ(cl.bodies()[0].faces[1].surface, 3);
+    EXPECT_EQ(cl.bodies()[0].faces[2].surface, 4);
+}
+
+// The torus bubble of seed §5.1.1: ball |x| <= 2 and the torus R = 2, r = 1 outside it. The
+// CAD volumes are 32 pi / 3 and 25.95632 (by quadrature of the tube cross-section).
+TEST(Fragment, TorusBubbleVolumes) {
+    Solid torus;
+    torus.kind = SolidKind::torus;
+    torus.R = 2;
+    torus.r = 1;
+    Cluster cl(froth::build_fragment(fragment_of({ball({0, 0, 0}, 2), torus}, 0.2)));
+    EXPECT_EQ(cl.n_surfaces(), 4);
+    EXPECT_EQ(cl.triple_lines().size(), 2u);
+    EXPECT_TRUE(cl.quadruple_points().empty());
+    const double ball_v = 32 * std::numbers::pi / 3, torus_v = 25.95632;
+    EXPECT_NEAR(body_volume(cl, 0), ball_v, 0.01 * ball_v);
+    EXPECT_NEAR(body_volume(cl, 1), torus_v, 0.01 * torus_v);
+    EXPECT_NEAR(body_volume(cl, 0) / body_volume(cl, 1), 1.29103, 0.01 * 1.29103);
+    // surfaces 1, 2 = lower and upper caps (same pair, ordered by height)
+    EXPECT_LT(cl.position(cl.surface(0).vertices[0]).z(), 0);
+    EXPECT_GT(cl.position(cl.surface(1).vertices[0]).z(), 0);
+}
+
+TEST(Fragment, TransformsAndLocalSize) {
+    Solid e = ball({0, 0, 0}, 1);
+    e.scale = froth::Vec3(1, 1, 2); // an ellipsoid, then moved
+    e.translate = froth::Vec3(5, 0, 0);
+    Cluster ce(froth::build_fragment(fragment_of({e}, 0.1)));
+    const double ve = 8 * std::numbers::pi / 3;
+    EXPECT_NEAR(body_volume(ce, 0), ve, 0.01 * ve);
+    for (const froth::Vec3& x : ce.positions())
+        EXPECT_NEAR(std::pow(x.x() - 5, 2) + x.y() * x.y() + x.z() * x.z() / 4, 1.0, 1e-3);
+
+    // A finer h on the second ball refines its films only: the first ball's cap stays coarse.
+    Solid fine = ball({1.5, 0, 0}, 1);
+    fine.h = 0.06;
+    Cluster coarse(
+        froth::build_fragment(fragment_of({ball({0, 0, 0}, 1), ball({1.5, 0, 0}, 1)}, 0.15)));
+    Cluster local(froth::build_fragment(fragment_of({ball({0, 0, 0}, 1), fine}, 0.15)));
+    const auto n_tri = [](const Cluster& c, int s) { return c.surface(s).triangles.size(); };
+    EXPECT_GT(n_tri(local, 1), 4 * n_tri(coarse, 1)); // ball 2's cap: (0.15 / 0.06)^2 = 6.25
+    EXPECT_LT(n_tri(local, 0), 1.5 * n_tri(coarse, 0));
+}
+
+TEST(Fragment, AutomaticSizeAimsAtTheVertexCount) {
+    froth::FragmentOptions o = fragment_of({ball({0, 0, 0}, 1), ball({1, 0, 0}, 1)}, 0);
+    o.h.reset();
+    o.default_vertices = 3000;
+    Cluster c(froth::build_fragment(o));
+    EXPECT_NEAR(c.n_vertices(), 3000, 300);
+}
+
+TEST(Fragment, ErrorsNameTheSolid) {
+    EXPECT_EQ(fragment_error(fragment_of({ball({0, 0, 0}, 1), ball({1, 0, 0}, 0)}, 0.2)),
+              "fragment: solids[2] (ball): radius r must be positive, got 0");
+    EXPECT_EQ(fragment_error(fragment_of({box({0, 0, 0}, {1, -1, 1})}, 0.2)),
+              "fragment: solids[1] (box): size must be positive in x, y and z, got {1, -1, 1}");
+    EXPECT_EQ(fragment_error(fragment_of({ball({0, 0, 0}, 1), ball({0.2, 0, 0}, 0.5)}, 0.2)),
+              "fragment: solids[2] (ball) lies inside the solids before it: its body would be "
+              "empty");
+    EXPECT_EQ(fragment_error(
+                  fragment_of({ball({0, 0, 0}, 1), ball({1, 0, 0}, 1), ball({5, 0, 0}, 1)}, 0.3)),
+              "fragment: solids[3] (ball) touches no other solid: a cluster must be connected");
+    EXPECT_EQ(fragment_error(fragment_of({ball({0, 0, 0}, 1)}, 0.001)),
+              "fragment: h = 0.001 gives about 15079645 vertices, more than 400000; use a larger "
+              "h (h >= 0.00620136)");
+    EXPECT_EQ(fragment_error(fragment_of({ball({0, 0, 0}, 1)}, 3)),
+              "fragment: h = 3 is larger than the cluster (extent 2); use h <= 2");
+    EXPECT_EQ(fragment_error(fragment_of({ball({0, 0, 0}, 1)}, -1)),
+              "fragment: h must be positive, got -1");
+    EXPECT_EQ(fragment_error(fragment_of({}, 0.1)), "fragment: no solids");
+    Solid t;
+    t.kind = SolidKind::torus;
+    t.R = 1;
+    t.r = 1;
+    EXPECT_EQ(fragment_error(fragment_of({t}, 0.1)),
+              "fragment: solids[1] (torus): tube radius r = 1 must be smaller than the major "
+              "radius R = 1");
+    froth::FragmentOptions o = fragment_of({ball({0, 0, 0}, 1)}, 0.3);
+    o.sigma_of[2] = 2;
+    EXPECT_EQ(fragment_error(o),
+              "fragment: sigma[3] names surface 3, but the cluster has only 1 surface");
+    o.sigma_of.clear();
+    o.sigma = 0;
+    EXPECT_EQ(fragment_error(o), "fragment: sigma must be positive, got 0");
+}
