@@ -66,7 +66,8 @@ end
 --- (torus | outside), 4 = the band of the sphere inside the torus (ball | torus).
 function M.torus_bubble(opts)
   local name = "torus_bubble"
-  opts = options(name, opts, {R = true, r = true, h = true, stretch = true, sigma = true})
+  opts = options(name, opts, {R = true, r = true, h = true, vertices = true, stretch = true,
+                              sigma = true})
   local R = number(name, opts, "R", 2)
   local r = number(name, opts, "r", 1)
   if not (R > 0 and R < math.huge) then fail(name, "R must be positive, got %s", R) end
@@ -78,7 +79,7 @@ function M.torus_bubble(opts)
     solids = {{"ball", r = R}, {"torus", R = R, r = r}},
     sigma = opts.sigma,
     transform = stretch and torus_stretch or nil,
-  }, number(name, opts, "h", nil), stretch and 5300 or 4800)
+  }, number(name, opts, "h", nil), number(name, opts, "vertices", stretch and 5300 or 4800))
 end
 
 --- Triple bubble (seed §5.1.2): the unit ball in three 120-degree wedges about the z axis.
@@ -87,7 +88,7 @@ end
 --- and 3 (azimuth 0), 6 = between 2 and 3 (azimuth 240). So body 1 = {1, 4, 5}, as in the seed.
 function M.triple_bubble(opts)
   local name = "triple_bubble"
-  opts = options(name, opts, {h = true, sigma = true})
+  opts = options(name, opts, {h = true, vertices = true, sigma = true})
   local solids = {}
   for k = 0, 2 do
     -- analytic wedges: no seam splits a lune (dependencies.md §3, triple_wedge)
@@ -95,7 +96,7 @@ function M.triple_bubble(opts)
                      rotate = {axis = {0, 0, 1}, angle = 2 * pi * k / 3}}
   end
   return fragment(name, {solids = solids, sigma = opts.sigma},
-                  number(name, opts, "h", nil), 6500)
+                  number(name, opts, "h", nil), number(name, opts, "vertices", 6500))
 end
 
 --- Quadruple bubble (seed §5.1.3): a 2x1x1 cuboid [0,2]x[0,1]x[0,1] (body 1), on it two unit
@@ -105,14 +106,14 @@ end
 --- 9 = (3,4).
 function M.quadruple_bubble(opts)
   local name = "quadruple_bubble"
-  opts = options(name, opts, {h = true, sigma = true})
+  opts = options(name, opts, {h = true, vertices = true, sigma = true})
   return fragment(name, {
     solids = {{"box", min = {0, 0, 0}, size = {2, 1, 1}},
               {"box", min = {0, 0, 1}, size = {1, 1, 1}},
               {"box", min = {1, 0, 1}, size = {1, 1, 1}},
               {"box", min = {0, 0, 2}, size = {2, 1, 1}}},
     sigma = opts.sigma,
-  }, number(name, opts, "h", nil), 7300)
+  }, number(name, opts, "h", nil), number(name, opts, "vertices", 7300))
 end
 
 return M

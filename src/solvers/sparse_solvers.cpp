@@ -23,10 +23,16 @@ namespace {
 // default scene, and a lagged factor needs about one more iteration per step of lag: so a
 // solve that needed more than kRefactorAfter iterations makes the next one refactorise first
 // (measured optimum on the double bubble; docs/benchmarks.md).
-constexpr double kTolerance = 1e-13; // normwise backward error |b - Ax| / (|A||x| + |b|)
+// Normwise backward errors |b - Ax| / (|A|_F |x| + |b|). A solve must reach kTolerance, about
+// what a fresh direct solve gives: with a looser 1e-13, solves near equilibrium let the energy
+// rise by ~1e-12 (triple bubble, measured), against Theorem 3.2. A fresh factorisation whose
+// polished solve stops short of it (an ill-conditioned system, e.g. tau = 10) is still
+// accepted up to kAcceptable.
+constexpr double kTolerance = 1e-15;
+constexpr double kAcceptable = 1e-11;
 constexpr int kRefactorAfter = 8;
 constexpr int kLaggedIterations = 20; // a lagged factor that needs more has failed
-constexpr int kFreshIterations = 30;
+constexpr int kFreshIterations = 10;
 
 /// Process-wide settings that pay off for repeated factorisations (measured in
 /// docs/benchmarks.md): one BLAS thread, and glibc malloc keeping freed memory instead of
@@ -108,8 +114,11 @@ Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::Ve
     auto apply_A = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return A * v; };
     auto apply_P = [&](const Eigen::VectorXd& v) { return apply_factor(v); };
     // The backward error, not the relative residual, is what a direct solve guarantees; with
-    // tau = 10 the saddle point is too ill-conditioned for a 1e-13 relative residual.
+    // tau = 10 the saddle point is too ill-conditioned for a small relative residual.
     const double norm_A = A.norm(); // Frobenius: bounds the 2-norm from above
+    auto backward_error = [&](const Eigen::VectorXd& x) {
+        return (b - apply_A(x)).norm() / (norm_A * x.norm() + b.norm());
+    };
     auto target = [&](const Eigen::VectorXd& x0) { return kTolerance * (norm_A * x0.norm() + b.norm()); };
     Eigen::VectorXd x;
     bool need_factor = !(reuse_ && factorized_ && last_iterations_ <= kRefactorAfter);
@@ -123,12 +132,13 @@ Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::Ve
         s.refactorized = true;
         x = apply_factor(b);
         s.iterations = detail::gmres(apply_A, apply_P, b, x, target(x), kFreshIterations);
-        if (s.iterations < 0 || !x.allFinite())
-            throw SolverError("solve: no convergence even with a fresh factorisation "
+        if (s.iterations < 0) s.iterations = kFreshIterations;
+        if (!x.allFinite() || !(backward_error(x) <= kAcceptable))
+            throw SolverError("solve: no accurate solution even with a fresh factorisation "
                               "(the system is numerically singular)");
     }
     last_iterations_ = s.iterations;
-    s.residual = (b - apply_A(x)).norm() / (norm_A * x.norm() + b.norm());
+    s.residual = backward_error(x);
     if (stats) *stats = s;
     return x;
 }
