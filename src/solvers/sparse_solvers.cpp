@@ -22,7 +22,7 @@ namespace {
 // A GMRES iteration costs one pair of triangular solves, about 1/16 of a factorisation on the
 // default scene, and a lagged factor needs about one more iteration per step of lag: so a
 // solve that needed more than kRefactorAfter iterations makes the next one refactorise first
-// (measured optimum on the double bubble; docs/benchmarks.md).
+// (a rule of thumb from that cost ratio; docs/benchmarks.md "Solver settings").
 // Normwise backward errors |b - Ax| / (|A|_F |x| + |b|). A solve must reach kTolerance, about
 // what a fresh direct solve gives: with a looser 1e-13, solves near equilibrium let the energy
 // rise by ~1e-12 (triple bubble, measured), against Theorem 3.2. A fresh factorisation whose
@@ -34,9 +34,9 @@ constexpr int kRefactorAfter = 8;
 constexpr int kLaggedIterations = 20; // a lagged factor that needs more has failed
 constexpr int kFreshIterations = 10;
 
-/// Process-wide settings that pay off for repeated factorisations (measured in
-/// docs/benchmarks.md): one BLAS thread, and glibc malloc keeping freed memory instead of
-/// returning each factor's workspace to the kernel (mmap/munmap churn cost ~20% of an SD step).
+/// Process-wide settings that pay off for repeated factorisations (docs/benchmarks.md,
+/// "Solver settings"): one BLAS thread, and glibc malloc keeping freed memory instead of
+/// returning each factor's workspace to the kernel (mmap/munmap churn cost ~13% of an SD step).
 void tune_for_factorisations() {
     static const bool once = [] {
         if (openblas_set_num_threads && !std::getenv("OPENBLAS_NUM_THREADS"))
