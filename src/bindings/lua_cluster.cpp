@@ -161,6 +161,8 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     EvolveOptions e;
     e.flow = parse_flow(o.string("flow")); // throws InvalidInput, caught by the caller's guard
     e.tau = o.number("tau");
+    e.tau_start = o.number("tau_start", 0.0);
+    e.tau_growth = o.number("tau_growth", e.tau_growth);
     if (o.has("T") && o.has("steps")) o.error("T", "and option 'steps' exclude each other");
     if (!o.has("T") && !o.has("steps")) o.error("T", "or option 'steps' is required");
     if (o.has("T")) {

@@ -27,6 +27,10 @@ void check_options(const EvolveOptions& o) {
     if (o.every < 0) throw InvalidInput("evolve: every must be >= 0");
     if (has_T && o.duration / o.tau > 1e9)
         throw InvalidInput("evolve: T / tau = " + fmt(o.duration / o.tau) + " steps is too many");
+    if (o.tau_start != 0 && !(o.tau_start > 0 && o.tau_start <= o.tau))
+        throw InvalidInput("evolve: tau_start must be in (0, tau], got " + fmt(o.tau_start));
+    if (!(o.tau_growth > 1 && o.tau_growth <= 10))
+        throw InvalidInput("evolve: tau_growth must be in (1, 10], got " + fmt(o.tau_growth));
     const WatchOptions& w = o.watch;
     if (!(w.min_volume_fraction >= 0 && w.min_volume_fraction < 1) ||
         !(w.min_edge_fraction >= 0 && w.min_edge_fraction < 1) ||
@@ -56,28 +60,30 @@ void draw_progress(std::FILE* out, const EvolveResult& r, const StepReport& s, d
 class Run {
   public:
     Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o)
-        : c_(c), stepper_(stepper), o_(o), watch_(o.watch), t_end_(c.time() + o.duration),
-          total_(o.steps >= 0 ? o.steps : static_cast<int>(std::ceil(o.duration / o.tau - 1e-9))),
-          checkpoint_(c.positions()), checkpoint_t_(c.time()) {
+        : c_(c), stepper_(stepper), o_(o), watch_(o.watch), t_start_(c.time()),
+          t_end_(c.time() + o.duration), checkpoint_(c.positions()), checkpoint_t_(c.time()) {
         r_.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
         if (!o.output.empty()) {
             series_ = std::make_unique<PvdSeries>(o.output);
             series_->add(c.time(), c, output_fields(c));
         }
-        if (!o.history.empty()) history_.push_back(history_row(make_report(c)));
+        if (!o.history.empty()) { // written at once too, so a bad path fails before any step
+            history_.push_back(history_row(make_report(c)));
+            write_history(o.history, history_);
+        }
     }
 
     /// Takes one step and everything that follows it; false ends the run.
     bool advance() {
-        if (r_.steps >= total_) return false;
+        if (done()) return false;
         if (consume_interrupt()) {
             r_.stop_reason = "interrupted";
             return false;
         }
         // The last step of a T-run ends exactly at t_end, whatever the summed round-off.
-        const bool last = o_.steps < 0 && r_.steps == total_ - 1;
-        const double tau = last ? t_end_ - c_.time() : o_.tau;
-        if (tau <= 1e-12 * o_.tau) return false; // T reached up to round-off
+        double tau = planned_tau();
+        const bool last = o_.steps < 0 && c_.time() + tau * (1 + 1e-9) >= t_end_;
+        if (last) tau = t_end_ - c_.time();
         std::optional<StepReport> s = try_step(tau);
         if (!s) return false;
         if (last) c_.set_time(t_end_), s->t = t_end_;
@@ -106,6 +112,22 @@ class Run {
     }
 
   private:
+    bool done() const {
+        if (o_.steps >= 0) return r_.steps >= o_.steps;
+        return c_.time() >= t_end_ - 1e-12 * o_.tau; // T reached up to round-off
+    }
+
+    /// tau, or during a start ramp tau_start * growth^k (k = steps taken), whichever is less.
+    double planned_tau() const {
+        if (!(o_.tau_start > 0)) return o_.tau;
+        return std::min(o_.tau, o_.tau_start * std::pow(o_.tau_growth, r_.steps));
+    }
+
+    double progress() const {
+        if (o_.steps >= 0) return o_.steps ? static_cast<double>(r_.steps) / o_.steps : 1.0;
+        return (c_.time() - t_start_) / (t_end_ - t_start_);
+    }
+
     /// A step that fails geometrically ends the run as a topology event; the step has left
     /// the cluster as it was. Bad input still throws.
     std::optional<StepReport> try_step(double tau) {
@@ -155,7 +177,7 @@ class Run {
             written_last_ = true;
         }
         if (o_.progress && std::chrono::duration<double>(Clock::now() - last_draw_).count() > 0.25) {
-            draw_progress(o_.progress, r_, s, static_cast<double>(r_.steps) / total_);
+            draw_progress(o_.progress, r_, s, progress());
             last_draw_ = Clock::now();
         }
     }
@@ -164,8 +186,7 @@ class Run {
     TimeStepper& stepper_;
     const EvolveOptions& o_;
     const TopologyWatch watch_;
-    const double t_end_;
-    const int total_;
+    const double t_start_, t_end_;
     EvolveResult r_;
     std::unique_ptr<PvdSeries> series_;
     std::vector<HistoryRow> history_;

@@ -14,6 +14,10 @@ namespace froth {
 struct EvolveOptions {
     Flow flow = Flow::SurfaceDiffusion;
     double tau = 0;
+    /// If > 0, start with steps of tau_start, growing by tau_growth per step up to tau: large
+    /// first steps from a non-smooth start (box edges, 90-degree junctions) lose volume.
+    double tau_start = 0;
+    double tau_growth = 1.1;
     double duration = -1;  ///< evolve for this model time (T); the last step is shortened to hit it
     int steps = -1;        ///< or for this many steps (exactly one of duration/steps is set)
     int every = 0;         ///< write a snapshot every `every` steps (0: first and last only)
