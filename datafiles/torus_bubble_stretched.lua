@@ -13,7 +13,7 @@ local V = c:volumes()
 print(("stretched torus bubble: %d vertices; torus/ball volume %.4f (seed: 0.25; the exact"
        .. " volume of the stretched solids is 0.2112, see docs/lua_api.md)")
       :format(c:info().vertices, V[2] / V[1]))
-local r = c:evolve{flow = "sd", tau = opts.tau,
+local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = 1e-7, -- ramp: 90-degree start
                    T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil}
 print(("t = %g after %d steps, volume loss %.3f%%"):format(r.t, r.steps, 100 * r.volume_loss))
 print("stop reason: " .. r.stop_reason .. " (seed: the ring tears at t ~ 0.91)")
