@@ -40,6 +40,15 @@ function M.assert_equal(actual, expected, what)
                 ("%s, expected %s"):format(tostring(actual), tostring(expected)))
 end
 
+--- Relative difference |a - b| / |b|.
+function M.rel(a, b) return math.abs(a - b) / math.abs(b) end
+
+--- "surfaces/triple_lines/quadruple_points/bodies" of a cluster, for compact count checks.
+function M.counts(c)
+  local i = c:info()
+  return ("%d/%d/%d/%d"):format(i.surfaces, i.triple_lines, i.quadruple_points, i.bodies)
+end
+
 --- Prints the closing line ctest and CI read, and exits 1 if anything failed.
 function M.summary()
   print(("%d passed, %d failed"):format(M.passed, M.failed))

@@ -6,11 +6,7 @@ if not froth.has("gmsh") then
   return T.summary()
 end
 local pi = math.pi
-local function rel(a, b) return math.abs(a - b) / math.abs(b) end
-local function counts(c)
-  local i = c:info()
-  return ("%d/%d/%d/%d"):format(i.surfaces, i.triple_lines, i.quadruple_points, i.bodies)
-end
+local rel, counts = T.rel, T.counts
 -- the extent of the vertices along coordinate d
 local function range(c, d)
   local lo, hi = math.huge, -math.huge

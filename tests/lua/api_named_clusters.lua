@@ -8,11 +8,7 @@ if not froth.has("gmsh") then
   return T.summary()
 end
 local pi = math.pi
-local function rel(a, b) return math.abs(a - b) / math.abs(b) end
-local function counts(c)
-  local i = c:info()
-  return ("%d/%d/%d/%d"):format(i.surfaces, i.triple_lines, i.quadruple_points, i.bodies)
-end
+local rel, counts = T.rel, T.counts
 -- signed surface ids of body k as a string, e.g. "1 -4 5"
 local function body(c, k)
   local ids = {}
