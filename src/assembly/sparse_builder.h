@@ -25,7 +25,6 @@ class SparseBuilder {
     }
     /// Ends a pass and returns the matrix (same pattern after every pass).
     const SparseMatrix& finish();
-    bool has_pattern() const { return !recording_ && M_.rows() > 0; }
 
   private:
     SparseMatrix M_;

@@ -7,7 +7,6 @@
 #include "run/evolve.h"
 
 #include <cmath>
-#include <string_view>
 
 #include <unistd.h>
 
@@ -269,14 +268,14 @@ const luaL_Reg methods[] = {
 
 /// Sets t[key] = {min, max, mean, count[, young_error]}; no angles (nil, not zeros) when
 /// there is nothing to measure.
-void push_angles(lua_State* L, const AngleStats& a, const char* key) {
+void push_angles(lua_State* L, const AngleStats& a, const char* key, bool with_young) {
     if (a.count == 0) return;
     lua_createtable(L, 0, 5);
     set_number(L, "min", a.min);
     set_number(L, "max", a.max);
     set_number(L, "mean", a.mean);
     set_integer(L, "count", a.count);
-    if (std::string_view(key) == "angles") set_number(L, "young_error", a.young_error);
+    if (with_young) set_number(L, "young_error", a.young_error);
     lua_setfield(L, -2, key);
 }
 
@@ -287,8 +286,8 @@ void push_report(lua_State* L, const Report& r) {
     push_numbers(L, r.volumes);
     lua_setfield(L, -2, "volumes");
     set_number(L, "volume_loss", r.volume_loss);
-    push_angles(L, r.angles, "angles");
-    push_angles(L, r.quadruple_angles, "quadruple_angles");
+    push_angles(L, r.angles, "angles", true);
+    push_angles(L, r.quadruple_angles, "quadruple_angles", false);
     lua_createtable(L, 0, 4);
     set_number(L, "min_angle", r.mesh.min_angle);
     set_number(L, "max_angle", r.mesh.max_angle);

@@ -109,10 +109,6 @@ void Cluster::set_sigma(int surface, double sigma) {
     surfaces_[surface].sigma = sigma;
 }
 
-std::vector<int> Cluster::vertex_surfaces(int v) const {
-    return {vs_list_.begin() + vs_start_[v], vs_list_.begin() + vs_start_[v + 1]};
-}
-
 int Cluster::pair_index(int v, int s) const {
     for (int k = vs_start_[v]; k < vs_start_[v + 1]; ++k)
         if (vs_list_[k] == s) return k;

@@ -92,9 +92,6 @@ class Cluster {
     /// Vertices where three or more triple lines meet (4 at a proper quadruple point).
     const std::vector<int>& quadruple_points() const { return quadruple_points_; }
 
-    /// Surfaces that contain vertex v (sorted).
-    std::vector<int> vertex_surfaces(int v) const;
-
     /// The (surface, vertex) pairs in vertex-major order, surfaces sorted within a vertex: pair k
     /// belongs to vertex v for pair_begin(v) <= k < pair_begin(v + 1). They number the
     /// per-surface unknowns (kappa_iv) of the schemes.
