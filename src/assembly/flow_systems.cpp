@@ -21,19 +21,17 @@ template <class F> void for_each_facet(const Cluster& c, F&& f) {
             f(i, t, local_stiffness(X[t[0]], X[t[1]], X[t[2]]));
 }
 
-/// The sigma-weighted vector stiffness A into the position block, which starts at (0, 0).
-void add_position_stiffness(const Cluster& c, SparseBuilder& M) {
+/// T^T A T: the sigma-weighted vector stiffness in the position block, which starts at (0, 0).
+void add_position_stiffness(const Cluster& c, const PositionBasis& P, SparseBuilder& M) {
     for_each_facet(c, [&](int i, const Tri& t, const Eigen::Matrix3d& K) {
         const double sigma = c.surface(i).sigma;
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                for (int d = 0; d < 3; ++d) M.add(3 * t[a] + d, 3 * t[b] + d, sigma * K(a, b));
+            for (int b = 0; b < 3; ++b) P.add_scaled_identity(M, t[a], t[b], sigma * K(a, b));
     });
 }
 
-void set_minus_AX(const Cluster& c, Eigen::VectorXd& rhs) {
-    const Eigen::VectorXd AX = apply_stiffness(c, c.positions());
-    rhs.head(AX.size()) = -AX;
+void set_minus_AX(const Cluster& c, const PositionBasis& P, Eigen::VectorXd& rhs) {
+    rhs.head(P.size()) = -P.restrict(apply_stiffness(c, c.positions()));
 }
 
 } // namespace
@@ -48,29 +46,28 @@ Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X) {
     return y;
 }
 
-void assemble_mcf(const Cluster& c, const PairGeometry& g, double tau, SparseBuilder& M,
-                  Eigen::VectorXd& rhs) {
-    const int n = 3 * c.n_vertices();
+void assemble_mcf(const Cluster& c, const PairGeometry& g, const PositionBasis& P, double tau,
+                  SparseBuilder& M, Eigen::VectorXd& rhs) {
+    const int n = P.size();
     M.begin(n, n);
-    add_position_stiffness(c, M);
+    add_position_stiffness(c, P, M);
     // (4.6b): kappa_iv = omega_iv . dX_v / tau, so (3.5b) gains m_iv omega_iv omega_iv^T / tau.
     for (int v = 0; v < c.n_vertices(); ++v) {
         Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
         for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
             B += g.mass[k] * g.omega[k] * g.omega[k].transpose();
-        for (int r = 0; r < 3; ++r)
-            for (int s = 0; s < 3; ++s) M.add(3 * v + r, 3 * v + s, B(r, s) / tau);
+        P.add_block(M, v, v, B / tau);
     }
     M.finish();
     rhs.resize(n);
-    set_minus_AX(c, rhs);
+    set_minus_AX(c, P, rhs);
 }
 
-void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z, double tau,
-                 SparseBuilder& M, Eigen::VectorXd& rhs) {
-    const int n = 3 * c.n_vertices(), size = n + Z.n_reduced;
+void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
+                 const PositionBasis& P, double tau, SparseBuilder& M, Eigen::VectorXd& rhs) {
+    const int n = P.size(), size = n + Z.n_reduced;
     M.begin(size, size);
-    add_position_stiffness(c, M);
+    add_position_stiffness(c, P, M);
     // -tau Z^T A_s Z: the scalar stiffness of each surface on its kappa pairs, through Z. (3.6a)
     for_each_facet(c, [&](int i, const Tri& t, const Eigen::Matrix3d& K) {
         int p[3];
@@ -85,14 +82,10 @@ void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z, d
     for (int v = 0; v < c.n_vertices(); ++v)
         for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
             for (int x = Z.start[k]; x < Z.start[k + 1]; ++x)
-                for (int d = 0; d < 3; ++d) {
-                    const double value = g.mass[k] * g.omega[k][d] * Z.val[x];
-                    M.add(3 * v + d, n + Z.col[x], value);
-                    M.add(n + Z.col[x], 3 * v + d, value);
-                }
+                P.add_column_pair(M, v, n + Z.col[x], g.mass[k] * Z.val[x] * g.omega[k]);
     M.finish();
     rhs = Eigen::VectorXd::Zero(size);
-    set_minus_AX(c, rhs);
+    set_minus_AX(c, P, rhs);
 }
 
 } // namespace froth

@@ -1,6 +1,7 @@
 #pragma once
 /// The linear systems of one time step of the isotropic schemes (numerics.md §5), assembled in
-/// the unknowns of the shared-vertex cluster. Positions are interleaved: dX_v = x(3v .. 3v+2).
+/// the unknowns of the shared-vertex cluster. Positions vertex by vertex: dX_v = T_v y_v
+/// (position_basis.h; T_v = I off the walls).
 ///
 /// Mean curvature flow, (3.5a,b) with kappa eliminated as in (4.6b) (mass lumping makes
 /// M diagonal):  ( A + 1/tau sum_i blockdiag_v(m_iv omega_iv omega_iv^T) ) dX = -A X^m.
@@ -12,6 +13,7 @@
 /// N maps kappa_iv to m_iv omega_iv at vertex v.
 
 #include "assembly/kappa_basis.h"
+#include "assembly/position_basis.h"
 #include "assembly/sparse_builder.h"
 #include "geometry/geometry.h"
 
@@ -26,10 +28,12 @@ Eigen::Matrix3d local_stiffness(const Vec3& x0, const Vec3& x1, const Vec3& x2);
 /// y = A X for the sigma-weighted vector stiffness (the energy gradient: A X = grad E).
 Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X);
 
-void assemble_mcf(const Cluster& c, const PairGeometry& g, double tau, SparseBuilder& M,
-                  Eigen::VectorXd& rhs);
+/// The systems in the reduced position unknowns y of P (dX_v = T_v y_v, (3.10)/(3.11)); with
+/// no walls P is the identity and these are (3.5)/(3.6).
+void assemble_mcf(const Cluster& c, const PairGeometry& g, const PositionBasis& P, double tau,
+                  SparseBuilder& M, Eigen::VectorXd& rhs);
 
-void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z, double tau,
-                 SparseBuilder& M, Eigen::VectorXd& rhs);
+void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
+                 const PositionBasis& P, double tau, SparseBuilder& M, Eigen::VectorXd& rhs);
 
 } // namespace froth

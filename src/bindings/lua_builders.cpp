@@ -4,6 +4,8 @@
 #include "bindings/lua_builders.h"
 
 #include "bindings/lua_cluster.h"
+#include "bindings/lua_walls.h"
+#include "core/errors.h"
 #include "bindings/luax.h"
 
 #ifdef FROTH_HAVE_GMSH
@@ -12,6 +14,7 @@
 #endif
 
 #include <climits>
+#include <map>
 #include <string>
 
 namespace froth::lua {
@@ -126,6 +129,9 @@ int l_cluster(lua_State* L) {
         }
     }
     lua_pop(L, 1);
+    o.push("walls");
+    spec.walls = read_walls(L, -1, "cluster: walls");
+    lua_pop(L, 1);
     o.finish();
     return guarded(L, [&] {
         push_cluster(L, std::move(spec));
@@ -193,8 +199,15 @@ int l_sphere(lua_State* L) {
 
 int l_read(lua_State* L) {
     const std::string path = luaL_checkstring(L, 1);
+    Options o(L, 2, "read", true);
+    o.push("walls");
+    std::vector<WallPtr> walls = read_walls(L, -1, "read: walls");
+    lua_pop(L, 1);
+    o.finish();
     return guarded(L, [&] {
-        push_cluster(L, read_msh(path));
+        ClusterSpec spec = read_msh(path);
+        spec.walls = std::move(walls);
+        push_cluster(L, std::move(spec));
         return 1;
     });
 }
@@ -367,6 +380,17 @@ void apply_transform(lua_State* L, int fn, std::vector<Vec3>& X) {
     }
 }
 
+/// fragment{sigma = {[id] = s}} with walls: ids of the films that remain.
+void apply_sigma_after_lids(ClusterSpec& spec, const std::map<int, double>& sigma_of) {
+    for (auto [id, sigma] : sigma_of) {
+        if (id >= static_cast<int>(spec.surfaces.size()))
+            throw InvalidInput("fragment: sigma names surface " + std::to_string(id + 1) +
+                               ", but there are " + std::to_string(spec.surfaces.size()) +
+                               " films once the lids on the walls are dropped");
+        spec.surfaces[id].sigma = sigma;
+    }
+}
+
 int l_fragment(lua_State* L) {
     Options o(L, 1, "fragment");
     FragmentOptions f;
@@ -394,7 +418,13 @@ int l_fragment(lua_State* L) {
     if (t != LUA_TNIL && t != LUA_TFUNCTION)
         luaL_error(L, "fragment: option 'transform' must be a function (x, y, z) -> x, y, z");
     lua_pop(L, 1);
+    o.push("walls");
+    std::vector<WallPtr> walls = read_walls(L, -1, "fragment: walls");
+    lua_pop(L, 1);
     o.finish();
+    // With walls, sigma ids count the films left once the lids are gone: apply them after.
+    std::map<int, double> sigma_of;
+    if (!walls.empty()) std::swap(sigma_of, f.sigma_of);
     ClusterSpec spec;
     guarded(L, [&] {
         spec = build_fragment(f);
@@ -403,6 +433,11 @@ int l_fragment(lua_State* L) {
     if (lua_getfield(L, 1, "transform") == LUA_TFUNCTION)
         apply_transform(L, lua_gettop(L), spec.vertices);
     return guarded(L, [&] {
+        if (!walls.empty()) {
+            spec.walls = std::move(walls);
+            drop_wall_lids(spec);
+            apply_sigma_after_lids(spec, sigma_of);
+        }
         push_cluster(L, std::move(spec));
         return 1;
     });

@@ -3,6 +3,7 @@
 #include "bindings/lua_cluster.h"
 
 #include "bindings/luax.h"
+#include "bindings/lua_walls.h"
 #include "io/write.h"
 #include "run/evolve.h"
 
@@ -28,6 +29,7 @@ int l_info(lua_State* L) {
     set_integer(L, "triple_lines", static_cast<long long>(c.triple_lines().size()));
     set_integer(L, "quadruple_points", static_cast<long long>(c.quadruple_points().size()));
     set_integer(L, "bodies", c.n_bodies());
+    set_integer(L, "walls", static_cast<long long>(c.walls().size()));
     return 1;
 }
 
@@ -116,6 +118,16 @@ int l_bodies(lua_State* L) {
     return 1;
 }
 
+int l_walls(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    lua_createtable(L, static_cast<int>(c.walls().size()), 0);
+    for (std::size_t w = 0; w < c.walls().size(); ++w) {
+        push_wall(L, c.walls()[w]);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(w + 1));
+    }
+    return 1;
+}
+
 int l_report(lua_State* L) {
     push_report(L, make_report(self(L).cluster));
     return 1;
@@ -126,9 +138,10 @@ int l_step(lua_State* L) {
     Options o(L, 2, "step");
     const std::string flow = o.string("flow");
     const double tau = o.number("tau");
+    const bool project = o.boolean("project", false);
     o.finish();
     return guarded(L, [&] {
-        const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau);
+        const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau, project);
         push_step_report(L, r);
         return 1;
     });
@@ -173,6 +186,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     e.every = static_cast<int>(o.integer("every", 0));
     e.output = o.string("output", "");
     e.history = o.string("history", "");
+    e.project_onto_walls = o.boolean("project", false);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
     e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;
     if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))
@@ -259,6 +273,7 @@ const luaL_Reg methods[] = {
     {"time", l_time},         {"vertex", l_vertex},
     {"triple_lines", l_triple_lines}, {"quadruple_points", l_quadruple_points},
     {"bodies", l_bodies},     {"report", l_report},
+    {"walls", l_walls},
     {"step", l_step},         {"evolve", l_evolve},
     {"write", l_write},       {"clone", l_clone},
     {nullptr, nullptr},
@@ -294,6 +309,16 @@ void push_report(lua_State* L, const Report& r) {
     set_number(L, "max_edge_ratio", r.mesh.max_edge_ratio);
     set_number(L, "min_area", r.mesh.min_area);
     lua_setfield(L, -2, "mesh");
+    if (r.contact_angles.count > 0) {
+        lua_createtable(L, 0, 5);
+        set_number(L, "min", r.contact_angles.min);
+        set_number(L, "max", r.contact_angles.max);
+        set_number(L, "mean", r.contact_angles.mean);
+        set_integer(L, "count", r.contact_angles.count);
+        set_number(L, "max_deviation", r.contact_angles.young_error);
+        lua_setfield(L, -2, "contact_angles");
+        set_number(L, "wall_drift", r.wall_drift);
+    }
 }
 
 void push_step_report(lua_State* L, const StepReport& r) {

@@ -33,6 +33,17 @@ std::pair<int, int> find_degenerate_facet(const Cluster& c, const std::vector<Ve
     return {-1, -1};
 }
 
+/// The optional projection of the seed's remark after (3.12): every wall-attached vertex moved
+/// back onto its walls (alternating projections for a vertex on two). Loses the stability
+/// bound of Theorem 3.4 in general.
+void project_vertices(const Cluster& c, std::vector<Vec3>& X) {
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        const std::vector<int> walls = c.vertex_walls(v);
+        for (int pass = 0; pass < (walls.size() > 1 ? 20 : 1); ++pass)
+            for (int w : walls) X[v] = c.walls()[w]->project(X[v]);
+    }
+}
+
 } // namespace
 
 Flow parse_flow(std::string_view name) {
@@ -53,6 +64,10 @@ Report make_report(const Cluster& c) {
     r.angles = triple_line_angles(c);
     r.quadruple_angles = quadruple_point_angles(c);
     r.mesh = mesh_quality(c);
+    if (c.has_walls()) {
+        r.contact_angles = contact_angles(c);
+        r.wall_drift = wall_drift(c);
+    }
     return r;
 }
 
@@ -66,7 +81,7 @@ struct TimeStepper::System {
 TimeStepper::TimeStepper() = default;
 TimeStepper::~TimeStepper() = default;
 
-StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
+StepReport TimeStepper::step(Cluster& c, Flow flow, double tau, bool project_onto_walls) {
     if (!(std::isfinite(tau) && tau > 0))
         throw InvalidInput("step: tau must be positive and finite, got " + fmt(tau));
     if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
@@ -85,15 +100,16 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
 
     const auto t0 = Clock::now();
     const PairGeometry g = pair_geometry(c);
+    const PositionBasis P(c);
     std::unique_ptr<System>& sys = flow == Flow::MeanCurvature ? mcf_ : sd_;
     if (!sys)
         sys = std::make_unique<System>(flow == Flow::MeanCurvature ? Factorization::Cholesky
                                                                    : Factorization::LU);
     if (flow == Flow::MeanCurvature) {
-        assemble_mcf(c, g, tau, sys->matrix, sys->rhs);
+        assemble_mcf(c, g, P, tau, sys->matrix, sys->rhs);
     } else {
         if (!Z_) Z_ = std::make_unique<KappaBasis>(kappa_basis(c));
-        assemble_sd(c, g, *Z_, tau, sys->matrix, sys->rhs);
+        assemble_sd(c, g, *Z_, P, tau, sys->matrix, sys->rhs);
     }
     const SparseMatrix& M = sys->matrix.finish();
     report.assemble_seconds = seconds_since(t0);
@@ -110,7 +126,8 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau) {
                           fmt(tau) + ")");
 
     std::vector<Vec3> X = c.positions();
-    for (int v = 0; v < c.n_vertices(); ++v) X[v] += x.segment<3>(3 * v);
+    for (int v = 0; v < c.n_vertices(); ++v) X[v] += P.displacement(x, v);
+    if (project_onto_walls) project_vertices(c, X);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
         throw GeometryError("step: with tau = " + fmt(tau) + " the step would collapse " +
                             facet_name(s, f) + "; the cluster is unchanged (try a smaller tau)");

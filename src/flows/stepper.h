@@ -28,6 +28,8 @@ struct Report {
     AngleStats angles;            ///< between films at triple lines
     AngleStats quadruple_angles;  ///< between triple lines at quadruple points
     MeshQuality mesh;
+    AngleStats contact_angles; ///< between films and walls (count 0 without walls)
+    double wall_drift = 0;     ///< max distance of a wall-attached vertex from its wall
 };
 Report make_report(const Cluster& c);
 
@@ -47,10 +49,12 @@ class TimeStepper {
   public:
     TimeStepper();
     ~TimeStepper();
-    /// Takes one step of length tau. On any throw the cluster is unchanged.
+    /// Takes one step of length tau; with project_onto_walls, wall-attached vertices are then
+    /// projected back onto their walls (off by default: it voids the stability bound).
+    /// On any throw the cluster is unchanged.
     /// \throw InvalidInput (tau), GeometryError (degenerate facets before or after the step),
     ///        SolverError (singular or non-finite system).
-    StepReport step(Cluster& c, Flow flow, double tau);
+    StepReport step(Cluster& c, Flow flow, double tau, bool project_onto_walls = false);
 
   private:
     struct System;

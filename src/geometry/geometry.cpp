@@ -28,6 +28,7 @@ std::vector<double> body_volumes(const Cluster& c) {
         for (const BodyFace& f : b.faces)
             for (const Tri& t : c.surface(f.surface).triangles)
                 v += f.sign * X[t[0]].dot(X[t[1]].cross(X[t[2]])) / 6.0;
+        for (const Lid& lid : b.lids) v += lid_volume(c, lid);
         volumes.push_back(v);
     }
     return volumes;

@@ -18,7 +18,8 @@ inline Vec3 area_vector2(const std::vector<Vec3>& X, const Tri& t) {
 std::vector<double> surface_areas(const Cluster& c);
 /// E = sum_i sigma_i |Gamma_i| (seed (1.5) with tensions).
 double energy(const Cluster& c);
-/// Body volumes by the divergence theorem, exact for closed polyhedra (numerics.md §1).
+/// Body volumes by the divergence theorem, exact for closed polyhedra (numerics.md §1); a
+/// body closed by a wall adds its lids (lid_volume: exact on flat walls).
 std::vector<double> body_volumes(const Cluster& c);
 /// max_b |V_b - V_b(0)| / V_b(0); 0 for a cluster without bodies.
 double max_volume_loss(const Cluster& c, const std::vector<double>& volumes);
@@ -49,6 +50,18 @@ AngleStats triple_line_angles(const Cluster& c);
 /// arccos(-1/3) = 109.47 degrees at equilibrium). Line directions from quadratic extrapolation
 /// through the next two vertices of each line.
 AngleStats quadruple_point_angles(const Cluster& c);
+
+/// Angles between films and walls at the wall-attached vertices: the angle between the film's
+/// normal and the wall's normal grad F / |grad F|, 90 degrees where the film meets the wall
+/// perpendicularly (the isotropic equilibrium, (1.26b)). The film normal at the wall comes from
+/// the same quadratic fit as the film angles (second order in h). count = 0 without walls;
+/// young_error = max |angle - 90|.
+AngleStats contact_angles(const Cluster& c);
+
+/// max over wall-attached vertices of the distance |F| / |grad F| to their walls: how far the
+/// linearised constraint (3.10)/(3.11) has let vertices drift off curved walls (0 on planes up
+/// to round-off).
+double wall_drift(const Cluster& c);
 
 struct MeshQuality {
     double min_angle = 0, max_angle = 0; ///< facet corner angles, degrees

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace froth {
 namespace {
@@ -168,6 +169,62 @@ AngleStats quadruple_point_angles(const Cluster& c) {
             for (std::size_t b = a + 1; b < dirs.size(); ++b) acc.add(angle_between(dirs[a], dirs[b]));
     }
     return acc.finish();
+}
+
+AngleStats contact_angles(const Cluster& c) {
+    AngleAccumulator acc;
+    if (!c.has_walls()) return acc.finish();
+    // Per (surface, vertex) pair, the boundary edges there and their facets' third corners.
+    std::map<std::array<int, 2>, int> edge_id;
+    const auto& edges = c.boundary_edges();
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) edge_id[{edges[e].a, edges[e].b}] = e;
+    std::vector<int> opposite(edges.size(), -1);
+    std::vector<Vec3> facet_normal(edges.size());
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles)
+            for (int k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                const auto it = edge_id.find({std::min(a, b), std::max(a, b)});
+                if (it == edge_id.end()) continue;
+                opposite[it->second] = t[(k + 2) % 3];
+                facet_normal[it->second] = area_vector2(c.positions(), t);
+            }
+    std::vector<std::vector<int>> at(c.n_pairs());
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+        for (int v : {edges[e].a, edges[e].b}) at[c.pair_index(v, edges[e].surface)].push_back(e);
+    const PairFacets pf = pair_facets(c);
+    for (int v = 0; v < c.n_vertices(); ++v)
+        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) {
+            if (at[k].size() != 2) continue; // not on the film's boundary (or a pinched corner)
+            const BoundaryEdge& e0 = edges[at[k][0]];
+            const BoundaryEdge& e1 = edges[at[k][1]];
+            const int prev = e0.a == v ? e0.b : e0.a, next = e1.a == v ? e1.b : e1.a;
+            const Vec3 t = (c.position(next) - c.position(prev)).normalized();
+            Vec3 chord = Vec3::Zero();
+            for (int e : at[k]) {
+                const Vec3 d = c.position(opposite[e]) - c.position(v);
+                chord += (d - d.dot(t) * t).normalized();
+            }
+            chord = (chord - chord.dot(t) * t).normalized();
+            const int s = c.pair_surface(k);
+            const Vec3 into = film_direction(c, two_ring(c, pf, v, s), v, t, chord);
+            Vec3 nu = t.cross(into).normalized();
+            if (nu.dot(facet_normal[at[k][0]] + facet_normal[at[k][1]]) < 0) nu = -nu;
+            for (int w : c.vertex_walls(v)) {
+                const double angle = angle_between(nu, c.walls()[w]->normal(c.position(v)));
+                acc.add(angle);
+                acc.stats.young_error = std::max(acc.stats.young_error, std::abs(angle - 90));
+            }
+        }
+    return acc.finish();
+}
+
+double wall_drift(const Cluster& c) {
+    double drift = 0;
+    for (int v = 0; v < c.n_vertices(); ++v)
+        for (int w : c.vertex_walls(v))
+            drift = std::max(drift, c.walls()[w]->distance(c.position(v)));
+    return drift;
 }
 
 } // namespace froth

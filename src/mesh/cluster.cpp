@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "core/format.h"
+#include "mesh/csr.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,22 +14,12 @@ namespace {
 std::string vertex_name(int v) { return "vertex " + std::to_string(v + 1); }
 std::string surface_name(int s) { return "surface " + std::to_string(s + 1); }
 
-// Builds CSR lists: start[k]..start[k+1] indexes list for key k.
-void build_csr(int n_keys, const std::vector<std::pair<int, int>>& pairs, std::vector<int>& start,
-               std::vector<int>& list) {
-    start.assign(n_keys + 1, 0);
-    for (auto [k, _] : pairs) ++start[k + 1];
-    for (int k = 0; k < n_keys; ++k) start[k + 1] += start[k];
-    list.resize(pairs.size());
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (auto [k, value] : pairs) list[fill[k]++] = value;
-}
-
 } // namespace
 
 Cluster::Cluster(ClusterSpec spec) {
     check_spec(spec);
     X_ = std::move(spec.vertices);
+    walls_ = std::move(spec.walls);
     surfaces_.resize(spec.surfaces.size());
     std::vector<std::pair<int, int>> vertex_surface;
     for (std::size_t i = 0; i < spec.surfaces.size(); ++i) {
@@ -43,19 +34,20 @@ Cluster::Cluster(ClusterSpec spec) {
         for (const Tri& t : s.triangles)
             initial_area_ += 0.5 * (X_[t[1]] - X_[t[0]]).cross(X_[t[2]] - X_[t[0]]).norm();
     }
-    build_csr(n_vertices(), vertex_surface, vs_start_, vs_list_);
+    build_csr_lists(n_vertices(), vertex_surface, vs_start_, vs_list_);
     for (int v = 0; v < n_vertices(); ++v)
         if (vs_start_[v] == vs_start_[v + 1])
             throw TopologyError("cluster: " + vertex_name(v) + " is not a corner of any facet");
 
     classify_edges();
+    attach_walls();
     build_triple_lines();
     std::vector<std::pair<int, int>> vertex_edge;
     for (int e = 0; e < static_cast<int>(junction_edges_.size()); ++e) {
         vertex_edge.emplace_back(junction_edges_[e].a, e);
         vertex_edge.emplace_back(junction_edges_[e].b, e);
     }
-    build_csr(n_vertices(), vertex_edge, vj_start_, vj_list_);
+    build_csr_lists(n_vertices(), vertex_edge, vj_start_, vj_list_);
     orient_bodies(spec.bodies);
 }
 
@@ -63,6 +55,8 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
     const int n = static_cast<int>(spec.vertices.size());
     if (n == 0) throw InvalidInput("cluster: no vertices");
     if (spec.surfaces.empty()) throw InvalidInput("cluster: no surfaces");
+    for (std::size_t w = 0; w < spec.walls.size(); ++w)
+        if (!spec.walls[w]) throw InvalidInput("cluster: wall " + std::to_string(w + 1) + " is null");
     for (int v = 0; v < n; ++v)
         if (!spec.vertices[v].allFinite())
             throw InvalidInput("cluster: " + vertex_name(v) + " has a non-finite coordinate");
@@ -113,6 +107,10 @@ int Cluster::pair_index(int v, int s) const {
     for (int k = vs_start_[v]; k < vs_start_[v + 1]; ++k)
         if (vs_list_[k] == s) return k;
     return -1;
+}
+
+std::vector<int> Cluster::vertex_walls(int v) const {
+    return {vw_list_.begin() + vw_start_[v], vw_list_.begin() + vw_start_[v + 1]};
 }
 
 std::vector<int> Cluster::vertex_junction_edges(int v) const {

@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
 
+#include "mesh/walls.h"
+
 #include <array>
 #include <string>
 #include <vector>
@@ -27,6 +29,9 @@ struct ClusterSpec {
     /// Each body as the (unsigned) ids of the surfaces that enclose it; the engine finds the
     /// signs so that every body is a closed, outward-oriented polyhedron.
     std::vector<std::vector<int>> bodies;
+    /// External boundaries (seed (1.25)): every free boundary edge (an edge of one facet only)
+    /// must lie on one of them; its vertices are then constrained to the wall (3.10)/(3.11).
+    std::vector<WallPtr> walls;
 };
 
 /// A surface of the cluster.
@@ -42,8 +47,23 @@ struct BodyFace {
     int sign;
 };
 
+/// Where a body meets a wall: a closed loop of free boundary edges of the body's films, each
+/// directed as the body's outward-oriented facets traverse it. The lid is the part of the wall
+/// inside the loop; volumes close it by a fan from the loop's center projected onto the wall.
+struct Lid {
+    std::vector<std::array<int, 2>> edges;
+    int wall;
+};
+
 struct Body {
     std::vector<BodyFace> faces;
+    std::vector<Lid> lids; ///< empty for a body enclosed by films alone
+};
+
+/// An edge of exactly one facet: it lies on a wall (seed B_k).
+struct BoundaryEdge {
+    int a, b;
+    int surface;
 };
 
 /// An edge shared by exactly three surfaces (seed Fig. 1). o[j] = +1 if the triangle of
@@ -103,6 +123,16 @@ class Cluster {
     /// Junction edges at vertex v.
     std::vector<int> vertex_junction_edges(int v) const;
 
+    const std::vector<WallPtr>& walls() const { return walls_; }
+    const std::vector<BoundaryEdge>& boundary_edges() const { return boundary_edges_; }
+    /// The walls (ids into walls()) that vertex v is attached to; empty unless v is on a free
+    /// boundary edge. Fixed when the cluster is made.
+    std::vector<int> vertex_walls(int v) const;
+    /// How many directions vertex v may move in: 3, or 3 - rank of its walls' normals.
+    int vertex_freedom(int v) const { return freedom_[v]; }
+    /// True if some vertex is attached to a wall.
+    bool has_walls() const { return !boundary_edges_.empty(); }
+
     /// Model time, advanced by the schemes.
     double time() const { return time_; }
     void set_time(double t) { time_ = t; }
@@ -116,6 +146,8 @@ class Cluster {
     void classify_edges();
     void build_triple_lines();
     void orient_bodies(const std::vector<std::vector<int>>& body_surfaces);
+    void attach_walls();
+    void find_lids(Body& body) const;
 
     std::vector<Vec3> X_;
     std::vector<Surface> surfaces_;
@@ -125,10 +157,24 @@ class Cluster {
     std::vector<int> quadruple_points_;
     // CSR incidence vertex -> surfaces and vertex -> junction edges
     std::vector<int> vs_start_, vs_list_, vj_start_, vj_list_;
+    std::vector<WallPtr> walls_;
+    std::vector<BoundaryEdge> boundary_edges_;
+    std::vector<int> vw_start_, vw_list_, freedom_; // CSR vertex -> walls; free directions
     std::vector<double> initial_volumes_;
     double initial_area_ = 0;
     int n_facets_ = 0;
     double time_ = 0.0;
 };
+
+/// Removes from spec the facets with all three corners on one of spec.walls (within 1e-6 of
+/// the mean edge length): the faces of a solid that rest on a wall are its lids, not films.
+/// Surfaces left without facets are removed (and from their bodies), unused vertices dropped
+/// and the rest renumbered by first use. Returns the old ids of the surfaces kept.
+std::vector<int> drop_wall_lids(ClusterSpec& spec);
+
+/// The volume the lid adds to its body: the fan from the loop's center (projected onto the
+/// wall) to the loop's edges, signed like the divergence-theorem sum of the body's facets.
+/// Exact for flat walls; on curved walls the lid's bulge off that fan is not counted.
+double lid_volume(const Cluster& c, const Lid& lid);
 
 } // namespace froth

@@ -52,11 +52,14 @@ void Cluster::classify_edges() {
         while (j < h.size() && h[j].lo == h[i].lo && h[j].hi == h[i].hi) ++j;
         const int count = static_cast<int>(j - i);
         const std::string edge = edge_name(h[i].lo, h[i].hi);
-        if (count == 1)
-            throw TopologyError("cluster: " + edge + " of surface " +
-                                std::to_string(h[i].surface + 1) +
-                                " is a free boundary edge (no external boundary is defined)");
-        if (count == 2) {
+        if (count == 1) {
+            if (walls_.empty())
+                throw TopologyError("cluster: " + edge + " of surface " +
+                                    std::to_string(h[i].surface + 1) +
+                                    " is a free boundary edge (in one facet only) and no wall is"
+                                    " attached; close the surface or give walls (froth.plane, ...)");
+            boundary_edges_.push_back({h[i].lo, h[i].hi, h[i].surface});
+        } else if (count == 2) {
             if (h[i].surface != h[i + 1].surface)
                 throw TopologyError("cluster: " + edge + " is shared by exactly two surfaces (" +
                                     std::to_string(h[i].surface + 1) + " and " +
@@ -150,10 +153,12 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
             std::vector<const HalfEdge*> mine;
             for (; j < h.size() && h[j].lo == h[i].lo && h[j].hi == h[i].hi; ++j)
                 if (sign.count(h[j].surface)) mine.push_back(&h[j]);
-            if (!mine.empty() && mine.size() != 2)
+            const bool on_wall = j - i == 1 && !walls_.empty(); // a free boundary edge
+            if (!mine.empty() && mine.size() != 2 && !(on_wall && mine.size() == 1))
                 throw TopologyError("cluster: " + name + " is not closed: " +
                                     edge_name(h[i].lo, h[i].hi) + " is in " +
-                                    std::to_string(mine.size()) + " of its facets, not 2");
+                                    std::to_string(mine.size()) + " of its facets, not 2" +
+                                    (walls_.empty() ? "" : " (and is not on a wall)"));
             if (mine.size() == 2 && mine[0]->surface != mine[1]->surface)
                 links.emplace_back(mine[0], mine[1]);
             i = j;
@@ -184,8 +189,14 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
             for (const Tri& t : surfaces_[s].triangles)
                 volume += sg * cone_volume(X_[t[0]], X_[t[1]], X_[t[2]]);
         }
-        if (volume < 0)
+        find_lids(body);
+        for (const Lid& lid : body.lids) volume += lid_volume(*this, lid);
+        if (volume < 0) {
+            volume = -volume;
             for (BodyFace& f : body.faces) f.sign = -f.sign;
+            for (Lid& lid : body.lids)
+                for (auto& e : lid.edges) std::swap(e[0], e[1]);
+        }
         bodies_.push_back(std::move(body));
         initial_volumes_.push_back(std::abs(volume));
     }

@@ -132,7 +132,7 @@ class Run {
     /// the cluster as it was. Bad input still throws.
     std::optional<StepReport> try_step(double tau) {
         try {
-            return stepper_.step(c_, o_.flow, tau);
+            return stepper_.step(c_, o_.flow, tau, o_.project_onto_walls);
         } catch (const InvalidInput&) {
             throw;
         } catch (const Error& e) {

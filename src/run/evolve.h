@@ -28,6 +28,9 @@ struct EvolveOptions {
     std::FILE* progress = nullptr; ///< a terminal to draw a progress line on, or nullptr
     /// Called after every step; returning false stops the evolution.
     std::function<bool(const StepReport&)> on_step;
+    /// Project wall-attached vertices back onto their walls after every step (off: the
+    /// seed's linearised constraint, which keeps the stability bound; see TimeStepper::step).
+    bool project_onto_walls = false;
     /// What counts as the approach of a topology change (run/topology_watch.h).
     WatchOptions watch;
 };

@@ -1,0 +1,274 @@
+// froth.Wall constructors and methods. A wall from Lua functions (froth.wall) calls back into
+// Lua from the engine's steps: the functions are called protected, and their errors become
+// froth errors naming the wall, so a failing F ends a step like any other bad input.
+#include "bindings/lua_walls.h"
+
+#include "bindings/luax.h"
+#include "core/errors.h"
+#include "core/format.h"
+
+#include <cmath>
+#include <string>
+
+namespace froth::lua {
+namespace {
+
+using WallHandle = const Wall;
+
+WallPtr& self_ptr(lua_State* L, int idx = 1) {
+    return static_cast<Box<WallHandle>*>(luaL_checkudata(L, idx, kWallType))->ptr;
+}
+
+/// Reads {x, y, z} (a table) or three numbers starting at idx.
+Vec3 read_point(lua_State* L, int idx) {
+    Vec3 x;
+    if (lua_istable(L, idx)) {
+        for (int d = 0; d < 3; ++d) {
+            if (lua_rawgeti(L, idx, d + 1) != LUA_TNUMBER)
+                luaL_error(L, "expected a point {x, y, z}");
+            x[d] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+    } else {
+        for (int d = 0; d < 3; ++d) x[d] = luaL_checknumber(L, idx + d);
+    }
+    return x;
+}
+
+Vec3 vector_option(lua_State* L, Options& o, const char* key, const Vec3& fallback) {
+    const int t = o.push(key);
+    Vec3 v = fallback;
+    if (t != LUA_TNIL) {
+        if (t != LUA_TTABLE || luaL_len(L, -1) != 3) o.error(key, "must be {x, y, z}");
+        for (int d = 0; d < 3; ++d) {
+            if (lua_rawgeti(L, -1, d + 1) != LUA_TNUMBER) o.error(key, "must be {x, y, z}");
+            v[d] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 1);
+    return v;
+}
+
+int l_plane(lua_State* L) {
+    Options o(L, 1, "plane", true);
+    const Vec3 n = vector_option(L, o, "normal", Vec3::UnitZ());
+    const double offset = o.number("offset", 0.0);
+    o.finish();
+    return guarded(L, [&] {
+        push_wall(L, make_plane(n, offset));
+        return 1;
+    });
+}
+
+int l_slab(lua_State* L) {
+    Options o(L, 1, "slab");
+    const Vec3 n = vector_option(L, o, "normal", Vec3::UnitZ());
+    const double lo = o.number("from", 0.0);
+    const double hi = o.number("to");
+    o.finish();
+    return guarded(L, [&] {
+        push_wall(L, make_slab(n, lo, hi));
+        return 1;
+    });
+}
+
+int l_sphere_wall(lua_State* L) {
+    Options o(L, 1, "sphere_wall");
+    const Vec3 c = vector_option(L, o, "center", Vec3::Zero());
+    const double r = o.number("radius");
+    o.finish();
+    return guarded(L, [&] {
+        push_wall(L, make_sphere_wall(c, r));
+        return 1;
+    });
+}
+
+int l_cylinder_wall(lua_State* L) {
+    Options o(L, 1, "cylinder_wall");
+    const Vec3 p = vector_option(L, o, "point", Vec3::Zero());
+    const Vec3 a = vector_option(L, o, "axis", Vec3::UnitZ());
+    const double r = o.number("radius");
+    o.finish();
+    return guarded(L, [&] {
+        push_wall(L, make_cylinder_wall(p, a, r));
+        return 1;
+    });
+}
+
+/// A Lua function kept in the registry for the life of the wall, called on the main thread.
+class LuaFunction {
+  public:
+    LuaFunction(lua_State* L, int idx, std::string wall, const char* what)
+        : wall_(std::move(wall)), what_(what) {
+        lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_MAINTHREAD);
+        L_ = lua_tothread(L, -1);
+        lua_pop(L, 1);
+        lua_pushvalue(L, idx);
+        ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+    }
+    ~LuaFunction() { luaL_unref(L_, LUA_REGISTRYINDEX, ref_); }
+    LuaFunction(const LuaFunction&) = delete;
+    LuaFunction& operator=(const LuaFunction&) = delete;
+
+    /// Calls f(x, y, z) for n results; throws InvalidInput on a Lua error or a non-number.
+    std::vector<double> call(const Vec3& x, int n) const {
+        const int top = lua_gettop(L_);
+        lua_rawgeti(L_, LUA_REGISTRYINDEX, ref_);
+        for (int d = 0; d < 3; ++d) lua_pushnumber(L_, x[d]);
+        std::string failure;
+        if (lua_pcall(L_, 3, n, 0) != LUA_OK) {
+            const char* msg = lua_tostring(L_, -1);
+            failure = msg ? msg : "(error object is not a string)";
+        }
+        std::vector<double> out(n);
+        for (int k = 0; k < n && failure.empty(); ++k) {
+            if (lua_type(L_, top + 1 + k) != LUA_TNUMBER)
+                failure = std::string("returned ") + luaL_typename(L_, top + 1 + k) +
+                          " where a number was expected";
+            out[k] = lua_tonumber(L_, top + 1 + k);
+        }
+        lua_settop(L_, top);
+        if (!failure.empty())
+            throw InvalidInput("wall '" + wall_ + "': " + what_ + "(" + fmt(x.x()) + ", " +
+                               fmt(x.y()) + ", " + fmt(x.z()) + ") failed: " + failure);
+        return out;
+    }
+
+  private:
+    lua_State* L_;
+    int ref_;
+    std::string wall_;
+    const char* what_;
+};
+
+int l_wall(lua_State* L) {
+    Options o(L, 1, "wall");
+    const std::string name = o.string("name", "user wall");
+    if (o.push("F") != LUA_TFUNCTION) o.error("F", "must be a function (x, y, z) -> F");
+    auto F = std::make_shared<LuaFunction>(L, -1, name, "F");
+    lua_pop(L, 1);
+    std::shared_ptr<LuaFunction> grad;
+    const int t = o.push("gradient");
+    if (t == LUA_TFUNCTION) grad = std::make_shared<LuaFunction>(L, -1, name, "gradient");
+    else if (t != LUA_TNIL) o.error("gradient", "must be a function (x, y, z) -> gx, gy, gz");
+    lua_pop(L, 1);
+    const double step = o.number("fd_step", 1e-6);
+    o.finish();
+    std::function<Vec3(const Vec3&)> g;
+    if (grad) g = [grad](const Vec3& x) {
+        const std::vector<double> v = grad->call(x, 3);
+        return Vec3(v[0], v[1], v[2]);
+    };
+    return guarded(L, [&] {
+        push_wall(L, make_function_wall([F](const Vec3& x) { return F->call(x, 1)[0]; }, g,
+                                        name, step));
+        return 1;
+    });
+}
+
+int l_value(lua_State* L) {
+    const WallPtr& w = self_ptr(L);
+    const Vec3 x = read_point(L, 2);
+    return guarded(L, [&] {
+        lua_pushnumber(L, w->value(x));
+        return 1;
+    });
+}
+
+int l_gradient(lua_State* L) {
+    const WallPtr& w = self_ptr(L);
+    const Vec3 x = read_point(L, 2);
+    return guarded(L, [&] {
+        const Vec3 g = w->gradient(x);
+        push_numbers(L, std::vector<double>{g[0], g[1], g[2]});
+        return 1;
+    });
+}
+
+int l_distance(lua_State* L) {
+    const WallPtr& w = self_ptr(L);
+    const Vec3 x = read_point(L, 2);
+    return guarded(L, [&] {
+        lua_pushnumber(L, w->distance(x));
+        return 1;
+    });
+}
+
+int l_project(lua_State* L) {
+    const WallPtr& w = self_ptr(L);
+    const Vec3 x = read_point(L, 2);
+    return guarded(L, [&] {
+        const Vec3 p = w->project(x);
+        push_numbers(L, std::vector<double>{p[0], p[1], p[2]});
+        return 1;
+    });
+}
+
+int l_tostring(lua_State* L) {
+    const std::string text = "froth.Wall (" + self_ptr(L)->describe() + ")";
+    lua_pushstring(L, text.c_str());
+    return 1;
+}
+
+int l_gc(lua_State* L) { return collect<WallHandle>(L, kWallType); }
+
+const luaL_Reg methods[] = {
+    {"F", l_value},         {"gradient", l_gradient}, {"distance", l_distance},
+    {"project", l_project}, {nullptr, nullptr},
+};
+
+const luaL_Reg constructors[] = {
+    {"plane", l_plane},
+    {"slab", l_slab},
+    {"sphere_wall", l_sphere_wall},
+    {"cylinder_wall", l_cylinder_wall},
+    {"wall", l_wall},
+    {nullptr, nullptr},
+};
+
+} // namespace
+
+void register_wall_type(lua_State* L) {
+    if (!luaL_newmetatable(L, kWallType)) {
+        lua_pop(L, 1);
+        return;
+    }
+    luaL_newlib(L, methods);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, l_gc);
+    lua_setfield(L, -2, "__gc");
+    lua_pushcfunction(L, l_tostring);
+    lua_setfield(L, -2, "__tostring");
+    lua_pop(L, 1);
+}
+
+void add_wall_constructors(lua_State* L) { luaL_setfuncs(L, constructors, 0); }
+
+void push_wall(lua_State* L, WallPtr wall) {
+    push<WallHandle>(L, std::move(wall), kWallType);
+}
+
+std::vector<WallPtr> read_walls(lua_State* L, int idx, const char* who) {
+    std::vector<WallPtr> walls;
+    idx = lua_absindex(L, idx);
+    if (lua_isnil(L, idx)) return walls;
+    if (luaL_testudata(L, idx, kWallType)) {
+        walls.push_back(self_ptr(L, idx));
+        return walls;
+    }
+    if (!lua_istable(L, idx))
+        luaL_error(L, "%s must be a wall or an array of walls (froth.plane{...}, ...), got %s", who,
+                   luaL_typename(L, idx));
+    for (int k = 1; k <= luaL_len(L, idx); ++k) {
+        lua_rawgeti(L, idx, k);
+        if (!luaL_testudata(L, -1, kWallType))
+            luaL_error(L, "%s[%d] must be a wall (froth.plane{...}, ...), got %s", who, k,
+                       luaL_typename(L, -1));
+        walls.push_back(self_ptr(L, lua_gettop(L)));
+        lua_pop(L, 1);
+    }
+    return walls;
+}
+
+} // namespace froth::lua

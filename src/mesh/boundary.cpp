@@ -1,0 +1,189 @@
+// Films attached to walls (seed (1.25), (3.10), (3.11)): which vertices are constrained to
+// which walls, and the lids that close bodies on a wall (numerics.md §1).
+
+#include "core/errors.h"
+#include "core/format.h"
+#include "mesh/cluster.h"
+#include "mesh/csr.h"
+
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace froth {
+namespace {
+
+std::string point_text(const Vec3& x) {
+    return "(" + fmt(x.x()) + ", " + fmt(x.y()) + ", " + fmt(x.z()) + ")";
+}
+
+std::string vertex_text(int v, const Vec3& x) {
+    return "vertex " + std::to_string(v + 1) + " " + point_text(x);
+}
+
+/// Rank of a set of unit normals (1, 2 or 3).
+int normal_rank(const std::vector<Vec3>& normals) {
+    Eigen::MatrixXd N(3, normals.size());
+    for (std::size_t k = 0; k < normals.size(); ++k) N.col(k) = normals[k];
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(N);
+    const auto& s = svd.singularValues();
+    int rank = 0;
+    for (int k = 0; k < s.size(); ++k) rank += s[k] > 1e-8 * s[0];
+    return rank;
+}
+
+int find_root(std::vector<int>& parent, int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+} // namespace
+
+void Cluster::attach_walls() {
+    const int n = n_vertices();
+    freedom_.assign(n, 3);
+    std::vector<std::pair<int, int>> vertex_wall;
+    std::vector<int> surface_of(n, -1), edge_other(n, -1);
+    for (const BoundaryEdge& e : boundary_edges_)
+        for (int v : {e.a, e.b}) surface_of[v] = e.surface, edge_other[v] = v == e.a ? e.b : e.a;
+    // Vertices of the mesh are placed on the walls by the builders up to round-off; a user mesh
+    // gets a relative tolerance of 1e-6 of a typical edge length.
+    const double edge = std::sqrt(4 / std::sqrt(3.0) * initial_area_ / std::max(n_facets_, 1));
+    const double tol = 1e-6 * edge;
+    for (int v = 0; v < n; ++v) {
+        if (surface_of[v] < 0) continue;
+        std::vector<Vec3> normals;
+        double nearest = INFINITY;
+        int nearest_wall = 0;
+        for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+            const double d = walls_[w]->distance(X_[v]);
+            if (d < nearest) nearest = d, nearest_wall = w;
+            if (d <= tol) {
+                vertex_wall.emplace_back(v, w);
+                normals.push_back(walls_[w]->normal(X_[v]));
+            }
+        }
+        const std::string where = vertex_text(v, X_[v]) + " of surface " +
+                                  std::to_string(surface_of[v] + 1);
+        if (normals.empty())
+            throw TopologyError("cluster: " + where + " is on a free boundary edge (" +
+                                std::to_string(v + 1) + "-" + std::to_string(edge_other[v] + 1) +
+                                ") but on no wall: the nearest, wall " +
+                                std::to_string(nearest_wall + 1) + " (" +
+                                walls_[nearest_wall]->describe() + "), is at distance " +
+                                fmt(nearest) + " (tolerance " + fmt(tol) + ")");
+        freedom_[v] = 3 - normal_rank(normals);
+        if (freedom_[v] == 0)
+            throw TopologyError("cluster: " + where + " lies on walls whose normals span all "
+                                "directions; it could not move");
+    }
+    build_csr_lists(n, vertex_wall, vw_start_, vw_list_);
+    for (const BoundaryEdge& e : boundary_edges_) {
+        const std::vector<int> wa = vertex_walls(e.a), wb = vertex_walls(e.b);
+        if (std::none_of(wa.begin(), wa.end(), [&](int w) {
+                return std::find(wb.begin(), wb.end(), w) != wb.end();
+            }))
+            throw TopologyError("cluster: boundary edge " + std::to_string(e.a + 1) + "-" +
+                                std::to_string(e.b + 1) + " of surface " +
+                                std::to_string(e.surface + 1) +
+                                " has its ends on different walls; a free edge must lie on one");
+    }
+}
+
+void Cluster::find_lids(Body& body) const {
+    if (boundary_edges_.empty()) return;
+    std::vector<std::array<int, 2>> keys;
+    for (const BoundaryEdge& e : boundary_edges_) keys.push_back({e.a, e.b});
+    std::sort(keys.begin(), keys.end());
+    std::vector<std::array<int, 2>> edges;
+    for (const BodyFace& f : body.faces)
+        for (const Tri& t : surfaces_[f.surface].triangles)
+            for (int k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                if (std::binary_search(keys.begin(), keys.end(),
+                                       std::array<int, 2>{std::min(a, b), std::max(a, b)}))
+                    edges.push_back(f.sign > 0 ? std::array<int, 2>{a, b}
+                                               : std::array<int, 2>{b, a});
+            }
+    std::vector<int> parent(n_vertices());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const auto& e : edges) parent[find_root(parent, e[0])] = find_root(parent, e[1]);
+    std::vector<int> lid_of(n_vertices(), -1);
+    for (const auto& e : edges) {
+        int& id = lid_of[find_root(parent, e[0])];
+        if (id < 0) {
+            id = static_cast<int>(body.lids.size());
+            const std::vector<int> wa = vertex_walls(e[0]), wb = vertex_walls(e[1]);
+            int wall = wa.front();
+            for (int w : wa)
+                if (std::find(wb.begin(), wb.end(), w) != wb.end()) wall = w;
+            body.lids.push_back({{}, wall});
+        }
+        body.lids[id].edges.push_back(e);
+    }
+}
+
+double lid_volume(const Cluster& c, const Lid& lid) {
+    const Wall& wall = *c.walls()[lid.wall];
+    Vec3 center = Vec3::Zero();
+    for (const auto& e : lid.edges) center += c.position(e[0]);
+    center /= static_cast<double>(lid.edges.size());
+    // The fan's apex on the wall: exact for flat walls whatever point of the plane it is.
+    const Vec3 apex = wall.gradient(center).norm() > 0 ? wall.project(center)
+                                                        : c.position(lid.edges.front()[0]);
+    double volume = 0;
+    for (const auto& e : lid.edges)
+        volume += apex.dot(c.position(e[1]).cross(c.position(e[0]))) / 6.0;
+    return volume;
+}
+
+std::vector<int> drop_wall_lids(ClusterSpec& spec) {
+    double length = 0;
+    int edges = 0;
+    for (const auto& surface : spec.surfaces)
+        for (const Tri& t : surface.triangles)
+            for (int k = 0; k < 3; ++k, ++edges)
+                length += (spec.vertices[t[k]] - spec.vertices[t[(k + 1) % 3]]).norm();
+    const double tol = 1e-6 * length / std::max(edges, 1);
+    auto on_wall = [&](const Tri& t) {
+        return std::any_of(spec.walls.begin(), spec.walls.end(), [&](const WallPtr& w) {
+            return std::all_of(t.begin(), t.end(),
+                               [&](int v) { return w->distance(spec.vertices[v]) <= tol; });
+        });
+    };
+    std::vector<int> kept, new_id(spec.surfaces.size(), -1);
+    std::vector<ClusterSpec::Surface> surfaces;
+    for (std::size_t i = 0; i < spec.surfaces.size(); ++i) {
+        auto& tris = spec.surfaces[i].triangles;
+        tris.erase(std::remove_if(tris.begin(), tris.end(), on_wall), tris.end());
+        if (tris.empty()) continue;
+        new_id[i] = static_cast<int>(kept.size());
+        kept.push_back(static_cast<int>(i));
+        surfaces.push_back(std::move(spec.surfaces[i]));
+    }
+    for (auto& body : spec.bodies) {
+        std::vector<int> ids;
+        for (int s : body)
+            if (s >= 0 && s < static_cast<int>(new_id.size()) && new_id[s] >= 0)
+                ids.push_back(new_id[s]);
+        body = std::move(ids);
+    }
+    std::vector<int> vertex_id(spec.vertices.size(), -1);
+    std::vector<Vec3> vertices;
+    for (auto& surface : surfaces)
+        for (Tri& t : surface.triangles)
+            for (int& v : t) {
+                if (vertex_id[v] < 0) {
+                    vertex_id[v] = static_cast<int>(vertices.size());
+                    vertices.push_back(spec.vertices[v]);
+                }
+                v = vertex_id[v];
+            }
+    spec.surfaces = std::move(surfaces);
+    spec.vertices = std::move(vertices);
+    return kept;
+}
+
+} // namespace froth

@@ -1,0 +1,204 @@
+#include "mesh/walls.h"
+
+#include "core/errors.h"
+#include "core/format.h"
+
+#include <cmath>
+
+namespace froth {
+namespace {
+
+std::string point_text(const Vec3& x) {
+    return "(" + fmt(x.x()) + ", " + fmt(x.y()) + ", " + fmt(x.z()) + ")";
+}
+
+Vec3 unit_vector(const Vec3& v, const std::string& who, const char* what) {
+    const double n = v.norm();
+    if (!(std::isfinite(n) && n > 0))
+        throw InvalidInput(who + ": " + what + " must be a finite non-zero vector, got " +
+                           point_text(v));
+    return v / n;
+}
+
+void require_finite(double value, const std::string& who, const char* what) {
+    if (!std::isfinite(value))
+        throw InvalidInput(who + ": " + what + " must be finite, got " + fmt(value));
+}
+
+class PlaneWall final : public Wall {
+  public:
+    PlaneWall(const Vec3& n, double d) : n_(n), d_(d) {}
+    double value(const Vec3& x) const override { return n_.dot(x) - d_; }
+    Vec3 gradient(const Vec3&) const override { return n_; }
+    std::string describe() const override {
+        return "plane " + point_text(n_) + " . x = " + fmt(d_);
+    }
+    bool is_flat() const override { return true; }
+
+  private:
+    Vec3 n_;
+    double d_;
+};
+
+class SlabWall final : public Wall {
+  public:
+    SlabWall(const Vec3& n, double lo, double hi) : n_(n), lo_(lo), hi_(hi) {}
+    double value(const Vec3& x) const override {
+        return 0.5 * (hi_ - lo_) - std::abs(n_.dot(x) - 0.5 * (lo_ + hi_));
+    }
+    Vec3 gradient(const Vec3& x) const override {
+        return n_.dot(x) > 0.5 * (lo_ + hi_) ? Vec3(-n_) : n_;
+    }
+    std::string describe() const override {
+        return "slab " + fmt(lo_) + " <= " + point_text(n_) + " . x <= " + fmt(hi_);
+    }
+    bool is_flat() const override { return true; }
+
+  private:
+    Vec3 n_;
+    double lo_, hi_;
+};
+
+class SphereWall final : public Wall {
+  public:
+    SphereWall(const Vec3& c, double r) : c_(c), r_(r) {}
+    double value(const Vec3& x) const override { return (x - c_).norm() - r_; }
+    Vec3 gradient(const Vec3& x) const override { return (x - c_).normalized(); }
+    std::string describe() const override {
+        return "sphere |x - " + point_text(c_) + "| = " + fmt(r_);
+    }
+
+  private:
+    Vec3 c_;
+    double r_;
+};
+
+class CylinderWall final : public Wall {
+  public:
+    CylinderWall(const Vec3& p, const Vec3& a, double r) : p_(p), a_(a), r_(r) {}
+    double value(const Vec3& x) const override { return radial(x).norm() - r_; }
+    Vec3 gradient(const Vec3& x) const override { return radial(x).normalized(); }
+    std::string describe() const override {
+        return "cylinder of radius " + fmt(r_) + " about " + point_text(p_) + " + s " +
+               point_text(a_);
+    }
+
+  private:
+    Vec3 radial(const Vec3& x) const {
+        const Vec3 d = x - p_;
+        return d - d.dot(a_) * a_;
+    }
+    Vec3 p_, a_;
+    double r_;
+};
+
+class FunctionWall final : public Wall {
+  public:
+    FunctionWall(std::function<double(const Vec3&)> F, std::function<Vec3(const Vec3&)> g,
+                 std::string name, double step)
+        : F_(std::move(F)), g_(std::move(g)), name_(std::move(name)), step_(step) {}
+    double value(const Vec3& x) const override {
+        const double f = F_(x);
+        if (!std::isfinite(f))
+            throw GeometryError("wall '" + name_ + "': F is " + fmt(f) + " at " + point_text(x));
+        return f;
+    }
+    Vec3 gradient(const Vec3& x) const override {
+        Vec3 g;
+        if (g_) {
+            g = g_(x);
+        } else {
+            for (int d = 0; d < 3; ++d) {
+                Vec3 e = Vec3::Zero();
+                e[d] = step_;
+                g[d] = (value(x + e) - value(x - e)) / (2 * step_);
+            }
+        }
+        if (!g.allFinite())
+            throw GeometryError("wall '" + name_ + "': grad F is " + point_text(g) + " at " +
+                                point_text(x));
+        return g;
+    }
+    std::string describe() const override { return "wall '" + name_ + "'"; }
+
+  private:
+    std::function<double(const Vec3&)> F_;
+    std::function<Vec3(const Vec3&)> g_;
+    std::string name_;
+    double step_;
+};
+
+} // namespace
+
+double Wall::distance(const Vec3& x) const {
+    const double f = value(x);
+    if (f == 0) return 0;
+    return std::abs(f) / gradient(x).norm();
+}
+
+Vec3 Wall::normal(const Vec3& x) const {
+    const Vec3 g = gradient(x);
+    const double n = g.norm();
+    if (!(n > 0))
+        throw GeometryError(describe() + ": grad F vanishes at " + point_text(x) +
+                            "; the wall has no tangent plane there");
+    return g / n;
+}
+
+Vec3 Wall::project(const Vec3& x0) const {
+    Vec3 x = x0;
+    for (int it = 0; it < 50; ++it) {
+        const double f = value(x);
+        const Vec3 g = gradient(x);
+        const double g2 = g.squaredNorm();
+        if (!(g2 > 0)) break;
+        const Vec3 dx = f / g2 * g;
+        x -= dx;
+        if (dx.norm() <= 1e-14 * (1 + x.norm())) return x;
+    }
+    if (distance(x) <= 1e-12 * (1 + x.norm())) return x;
+    throw GeometryError(describe() + ": cannot project " + point_text(x0) +
+                        " onto the wall (Newton's method did not converge)");
+}
+
+WallPtr make_plane(const Vec3& normal, double offset) {
+    require_finite(offset, "plane", "offset");
+    return std::make_shared<PlaneWall>(unit_vector(normal, "plane", "normal"), offset);
+}
+
+WallPtr make_slab(const Vec3& normal, double lo, double hi) {
+    require_finite(lo, "slab", "lower offset");
+    require_finite(hi, "slab", "upper offset");
+    if (!(lo < hi))
+        throw InvalidInput("slab: the lower offset " + fmt(lo) + " must be below the upper " +
+                           fmt(hi));
+    return std::make_shared<SlabWall>(unit_vector(normal, "slab", "normal"), lo, hi);
+}
+
+WallPtr make_sphere_wall(const Vec3& center, double radius) {
+    if (!center.allFinite()) throw InvalidInput("sphere_wall: center must be finite");
+    if (!(std::isfinite(radius) && radius > 0))
+        throw InvalidInput("sphere_wall: radius must be positive, got " + fmt(radius));
+    return std::make_shared<SphereWall>(center, radius);
+}
+
+WallPtr make_cylinder_wall(const Vec3& point, const Vec3& axis, double radius) {
+    if (!point.allFinite()) throw InvalidInput("cylinder_wall: point must be finite");
+    if (!(std::isfinite(radius) && radius > 0))
+        throw InvalidInput("cylinder_wall: radius must be positive, got " + fmt(radius));
+    return std::make_shared<CylinderWall>(point, unit_vector(axis, "cylinder_wall", "axis"),
+                                          radius);
+}
+
+WallPtr make_function_wall(std::function<double(const Vec3&)> F,
+                           std::function<Vec3(const Vec3&)> gradient, std::string name,
+                           double fd_step) {
+    if (!F) throw InvalidInput("wall: F is required");
+    if (!(std::isfinite(fd_step) && fd_step > 0))
+        throw InvalidInput("wall: the finite-difference step must be positive, got " +
+                           fmt(fd_step));
+    return std::make_shared<FunctionWall>(std::move(F), std::move(gradient), std::move(name),
+                                          fd_step);
+}
+
+} // namespace froth
