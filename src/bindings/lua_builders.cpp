@@ -265,12 +265,32 @@ void read_scale(lua_State* L, Options& o, Solid& s, const std::string& who) {
         luaL_error(L, "%s: scale must be a number or {sx, sy, sz}", who.c_str());
 }
 
+/// latitude = {lo, hi} (radians; the range is checked by build_fragment)
+void read_latitude(lua_State* L, Options& o, Solid& s, const std::string& who) {
+    const int t = o.push("latitude");
+    if (t != LUA_TNIL) {
+        if (t != LUA_TTABLE || luaL_len(L, -1) != 2)
+            luaL_error(L, "%s: latitude must be {lo, hi} (radians)", who.c_str());
+        double v[2];
+        for (int i = 0; i < 2; ++i) {
+            if (lua_rawgeti(L, -1, i + 1) != LUA_TNUMBER)
+                luaL_error(L, "%s: latitude must be {lo, hi} (radians)", who.c_str());
+            v[i] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+        s.latitude_lo = v[0];
+        s.latitude_hi = v[1];
+    }
+    lua_pop(L, 1);
+}
+
 void read_kind_fields(lua_State* L, Options& o, Solid& s, const std::string& who) {
     switch (s.kind) {
     case SolidKind::ball:
         s.center = vec3_option(L, o, "center", Vec3::Zero(), who);
         s.r = o.number("r");
         s.angle = o.number("angle", s.angle);
+        read_latitude(L, o, s, who);
         break;
     case SolidKind::box:
         s.min = required_vec3(L, o, "min", who);

@@ -34,6 +34,11 @@ struct Solid {
     double angle = 2 * std::numbers::pi; ///< ball only: azimuthal opening in (0, 2 pi], the
                                          ///< wedge from azimuth 0 (+x) counterclockwise about
                                          ///< the z axis through the center (before rotate)
+    double latitude_lo = -std::numbers::pi / 2; ///< ball only: the latitude band [lo, hi]
+    double latitude_hi = std::numbers::pi / 2;  ///< (radians, -pi/2 <= lo < hi <= pi/2) about
+                                                ///< the z axis through the center; a band
+                                                ///< other than the whole ball is closed by
+                                                ///< flat disks (lo = 0: the upper half ball)
     Vec3 translate = Vec3::Zero();
     Vec3 rotate_axis = Vec3::UnitZ();
     double rotate_angle = 0;   ///< radians, right-handed about rotate_axis

@@ -87,6 +87,18 @@ void check_kind_fields(const Solid& s, const std::string& who) {
     }
 }
 
+// -pi/2 <= lo < hi <= pi/2 (a round-off above pi/2 is allowed: lo = -math.pi / 2 in Lua).
+void check_latitude(const Solid& s, const std::string& who) {
+    constexpr double half = std::numbers::pi / 2, slack = 1e-12;
+    const double lo = s.latitude_lo, hi = s.latitude_hi;
+    if (!(std::isfinite(lo) && std::isfinite(hi)))
+        throw InvalidInput(who + ": latitude must be finite, got {" + num(lo) + ", " + num(hi) +
+                           "}");
+    if (!(lo >= -half * (1 + slack) && hi <= half * (1 + slack) && lo < hi))
+        throw InvalidInput(who + ": latitude {lo, hi} must satisfy -pi/2 <= lo < hi <= pi/2 " +
+                           "(radians), got {" + num(lo) + ", " + num(hi) + "}");
+}
+
 void check_solid(const FragmentOptions& o, std::size_t k) {
     const Solid& s = o.solids[k];
     const std::string who = label(o, k);
@@ -99,6 +111,7 @@ void check_solid(const FragmentOptions& o, std::size_t k) {
     check_kind_fields(s, who);
     if (!(s.angle > 0 && s.angle <= 2 * std::numbers::pi * (1 + 1e-12)))
         throw InvalidInput(who + ": angle must be in (0, 2 pi], got " + num(s.angle));
+    check_latitude(s, who);
     if (s.rotate_angle != 0 && s.rotate_axis.norm() == 0)
         throw InvalidInput(who + ": rotate axis must be a nonzero vector");
     if (!(s.scale.array() > 0).all())
@@ -134,8 +147,10 @@ int add_solid(const Solid& s) {
     int tag = -1;
     switch (s.kind) {
     case SolidKind::ball:
-        tag = occ::addSphere(c.x(), c.y(), c.z(), s.r, -1, -std::numbers::pi / 2,
-                             std::numbers::pi / 2, std::min(s.angle, 2 * std::numbers::pi));
+        tag = occ::addSphere(c.x(), c.y(), c.z(), s.r, -1,
+                             std::max(s.latitude_lo, -std::numbers::pi / 2),
+                             std::min(s.latitude_hi, std::numbers::pi / 2),
+                             std::min(s.angle, 2 * std::numbers::pi));
         break;
     case SolidKind::box:
         tag = occ::addBox(s.min.x(), s.min.y(), s.min.z(), s.size.x(), s.size.y(), s.size.z());

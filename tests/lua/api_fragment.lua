@@ -90,6 +90,13 @@ local wedge = froth.fragment{solids = {{"ball", r = 1, angle = pi / 2}}, h = 0.1
 T.assert_equal(counts(wedge), "1/0/0/1", "a wedge is one surface")
 T.assert_true(rel(wedge:volumes()[1], pi / 3) < 0.01, "quarter ball volume", wedge:volumes()[1])
 
+-- latitude: the band of a ball between two latitudes; {0, pi/2} is the upper half ball.
+local half = froth.fragment{solids = {{"ball", r = 1, latitude = {0, pi / 2}}}, h = 0.1}
+T.assert_equal(counts(half), "1/0/0/1", "a half ball is one surface (dome and disk)")
+T.assert_true(rel(half:volumes()[1], 2 * pi / 3) < 0.01, "half ball volume", half:volumes()[1])
+local whole = froth.fragment{solids = {{"ball", r = 1, latitude = {-pi / 2, pi / 2}}}, h = 0.2}
+T.assert_true(rel(whole:volumes()[1], 4 * pi / 3) < 0.02, "latitude {-pi/2, pi/2}: the ball")
+
 -- Boxes sharing faces: the seed's quadruple bubble.
 local quad = froth.fragment{solids = {{"box", min = {0, 0, 0}, size = {2, 1, 1}},
                                       {"box", min = {0, 0, 1}, size = {1, 1, 1}},
@@ -160,6 +167,14 @@ bad("fragment: solids[1] (ball): rotate: option 'angle' is required",
 bad("fragment: solids[1] (ball): rotate axis must be a nonzero vector",
     {solids = {{"ball", r = 1, rotate = {axis = {0, 0, 0}, angle = 1}}}})
 bad("fragment: solids[1] (ball): angle must be in (0, 2 pi], got 7", {solids = {{"ball", r = 1, angle = 7}}})
+bad("fragment: solids[1] (ball): latitude {lo, hi} must satisfy -pi/2 <= lo < hi <= pi/2 (radians), got {1, 1}",
+    {solids = {{"ball", r = 1, latitude = {1, 1}}}})
+bad("fragment: solids[1] (ball): latitude {lo, hi} must satisfy -pi/2 <= lo < hi <= pi/2 (radians), got {-2, 0}",
+    {solids = {{"ball", r = 1, latitude = {-2, 0}}}})
+bad("fragment: solids[1] (ball): latitude must be {lo, hi} (radians)", {solids = {{"ball", r = 1, latitude = 0}}})
+bad("fragment: solids[1] (ball): latitude must be {lo, hi} (radians)", {solids = {{"ball", r = 1, latitude = {0, "1"}}}})
+bad("fragment: solids[1] (box): unknown option 'latitude'",
+    {solids = {{"box", min = {0, 0, 0}, size = {1, 1, 1}, latitude = {0, 1}}}})
 bad("fragment: solids[2] (ball) lies inside the solids before it: its body would be empty",
     {solids = {B, {"ball", r = 0.5}}, h = 0.3})
 bad("fragment: solids[3] (ball) touches no other solid: a cluster must be connected",

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -490,4 +491,63 @@ TEST(Fragment, ErrorsNameTheSolid) {
     o.sigma_of.clear();
     o.sigma = 0;
     EXPECT_EQ(fragment_error(o), "fragment: sigma must be positive, got 0");
+}
+
+// latitude = {lo, hi}: the band of the ball between two latitudes, closed by flat disks. The
+// upper half ball {0, pi/2} is one film (dome and disk, one region pair) of volume 2 pi r^3 / 3.
+TEST(Fragment, BallLatitudeBand) {
+    constexpr double pi = std::numbers::pi;
+    Solid half = ball({0, 0, 1}, 1);
+    half.latitude_lo = 0;
+    half.latitude_hi = pi / 2;
+    Cluster c(froth::build_fragment(fragment_of({half}, 0.1)));
+    EXPECT_EQ(c.n_surfaces(), 1);
+    EXPECT_EQ(c.n_bodies(), 1);
+    EXPECT_NEAR(body_volume(c, 0), 2 * pi / 3, 0.01 * 2 * pi / 3);
+    int on_disk = 0;
+    for (const froth::Vec3& x : c.positions()) {
+        EXPECT_GE(x.z(), 1 - 1e-9);
+        EXPECT_LE((x - froth::Vec3(0, 0, 1)).norm(), 1 + 1e-9);
+        on_disk += std::abs(x.z() - 1) < 1e-9;
+    }
+    EXPECT_GT(on_disk, 50); // the disk is meshed: (pi / 0.1^2) / 1.2 ~ 260 vertices
+
+    // A zone between z = r sin(lo) and z = r sin(hi): V = pi (r^2 (z2 - z1) - (z2^3 - z1^3) / 3).
+    Solid zone = ball({0, 0, 0}, 2);
+    zone.latitude_lo = -pi / 6;
+    zone.latitude_hi = pi / 4;
+    Cluster cz(froth::build_fragment(fragment_of({zone}, 0.15)));
+    const double z1 = 2 * std::sin(-pi / 6), z2 = 2 * std::sin(pi / 4);
+    const double vz = pi * (4 * (z2 - z1) - (z2 * z2 * z2 - z1 * z1 * z1) / 3);
+    EXPECT_NEAR(body_volume(cz, 0), vz, 0.01 * vz);
+    for (const froth::Vec3& x : cz.positions()) {
+        EXPECT_GE(x.z(), z1 - 1e-9);
+        EXPECT_LE(x.z(), z2 + 1e-9);
+    }
+
+    // Round-off past pi/2 (Lua's -math.pi / 2 and math.pi / 2) is the whole ball.
+    Solid whole = ball({0, 0, 0}, 1);
+    whole.latitude_lo = -pi / 2 * (1 + 1e-15);
+    whole.latitude_hi = pi / 2 * (1 + 1e-15);
+    EXPECT_NEAR(body_volume(Cluster(froth::build_fragment(fragment_of({whole}, 0.15))), 0),
+                4 * pi / 3, 0.02 * 4 * pi / 3);
+}
+
+TEST(Fragment, BallLatitudeErrors) {
+    const auto with = [](double lo, double hi) {
+        Solid s = ball({0, 0, 0}, 1);
+        s.latitude_lo = lo;
+        s.latitude_hi = hi;
+        return fragment_error(fragment_of({s}, 0.2));
+    };
+    EXPECT_EQ(with(0.5, 0.5), "fragment: solids[1] (ball): latitude {lo, hi} must satisfy -pi/2 "
+                              "<= lo < hi <= pi/2 (radians), got {0.5, 0.5}");
+    EXPECT_EQ(with(1, 0), "fragment: solids[1] (ball): latitude {lo, hi} must satisfy -pi/2 <= "
+                          "lo < hi <= pi/2 (radians), got {1, 0}");
+    EXPECT_EQ(with(-2, 0), "fragment: solids[1] (ball): latitude {lo, hi} must satisfy -pi/2 <= "
+                           "lo < hi <= pi/2 (radians), got {-2, 0}");
+    EXPECT_EQ(with(0, 1.6), "fragment: solids[1] (ball): latitude {lo, hi} must satisfy -pi/2 <= "
+                            "lo < hi <= pi/2 (radians), got {0, 1.6}");
+    EXPECT_EQ(with(0, std::numeric_limits<double>::quiet_NaN()),
+              "fragment: solids[1] (ball): latitude must be finite, got {0, nan}");
 }
