@@ -495,14 +495,15 @@ const luaL_Reg functions[] = {
 };
 
 #ifdef FROTH_HAVE_GMSH
-// The named clusters (froth.torus_bubble, ...) are Lua, lua/froth/clusters.lua, on top of
-// froth.fragment; they are copied into the froth table so that no script has to require them.
-// A missing module is an error at startup rather than a silently missing builder.
-void add_named_clusters(lua_State* L, int froth) {
+// The named clusters (froth.torus_bubble, ..., froth.cube_on_plane, ...) are Lua,
+// lua/froth/clusters.lua and lua/froth/wall_clusters.lua, on top of froth.fragment; they are
+// copied into the froth table so that no script has to require them. A missing module is an
+// error at startup rather than a silently missing builder.
+void add_named_clusters(lua_State* L, int froth, const char* module) {
     lua_getglobal(L, "require");
-    lua_pushstring(L, "froth.clusters");
+    lua_pushstring(L, module);
     lua_call(L, 1, 1);
-    if (!lua_istable(L, -1)) luaL_error(L, "froth.clusters must return a table of builders");
+    if (!lua_istable(L, -1)) luaL_error(L, "%s must return a table of builders", module);
     lua_pushnil(L);
     while (lua_next(L, -2)) {
         if (lua_type(L, -2) == LUA_TSTRING && lua_isfunction(L, -1)) {
@@ -522,7 +523,8 @@ void add_named_clusters(lua_State* L, int froth) {
 void add_builders(lua_State* L) {
     luaL_setfuncs(L, functions, 0);
 #ifdef FROTH_HAVE_GMSH
-    add_named_clusters(L, lua_gettop(L));
+    for (const char* module : {"froth.clusters", "froth.wall_clusters"})
+        add_named_clusters(L, lua_gettop(L), module);
 #endif
 }
 
