@@ -1,0 +1,98 @@
+-- Regression: a drop resting on the curved wall |x| = 2 (froth.drop_on_sphere_wall: the half
+-- ball of radius 0.7 sheared onto the sphere, meeting it at 69.5 degrees) under surface
+-- diffusion to T = 0.5. On a curved wall the linearised constraint (3.11) lets the rim drift off
+-- the wall by O(tau^2); no projection here. h = 0.1 (404 vertices), tau = 1e-3 after a ramp
+-- from 1e-6. The drop tends to the spherical cap of its volume meeting the wall at 90 degrees:
+-- the sphere of radius a centred at (0, 0, sqrt(R^2 + a^2)), which cuts |x| = R orthogonally.
+-- Required: energy non-increasing at every step; every step reports wall_drift, below 1e-4
+-- (1e-3 h); contact angles 90 +- 1.5 at the end; the film a sphere (least-squares fit with its
+-- center on the x3 axis: distances within 1% of the fitted radius a) orthogonal to the wall
+-- (center height within 0.5% of sqrt(R^2 + a^2)); a within 1% of the radius predicted from the
+-- volume; the true volume (froth's volume, whose lid is a fan of chords, minus the sliver between
+-- that fan and the sphere cap under the drop) kept within 0.5%.
+-- Measured when written (1.5 s): max drift 3.07e-5, angles 89.45..90.49, fitted a = 0.63515
+-- (distances -0.25%..+0.18%), predicted 0.63354 (+0.25%), center 2.09882 vs 2.09843, true
+-- volume -0.019%. froth's own volume_loss is 2.04%: its fan lid is below the wall by a sliver
+-- that shrinks as the rim moves in (0.7 -> 0.6), so on curved walls that number is not a loss.
+local T = require("froth.test")
+
+local R, r0 = 2, 0.7
+local c = froth.drop_on_sphere_wall{R = R, r = r0, h = 0.1}
+local wall = c:walls()[1]
+local pi = math.pi
+
+-- The sliver between the fan (apex at the pole) and the sphere cap above the rim circle of
+-- radius rho: cap - cone.
+local function sliver(rho)
+  local hc = R - math.sqrt(R * R - rho * rho)
+  return pi * hc ^ 2 * (3 * R - hc) / 3 - pi * rho * rho * hc / 3
+end
+-- froth's volume less the sliver under the mean rim radius (rim: vertices within 1e-3 of the wall)
+local function true_volume()
+  local sum, k = 0, 0
+  for v = 1, c:info().vertices do
+    local x = c:vertex(v)
+    if wall:distance(x) < 1e-3 then sum, k = sum + math.sqrt(x[1] ^ 2 + x[2] ^ 2), k + 1 end
+  end
+  return c:volumes()[1] - sliver(sum / k)
+end
+local V0 = true_volume()
+
+local drift, reported, steps = 0, 0, 0
+local res = c:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-6, T = 0.5, progress = false,
+                     on_step = function(s)
+                       steps = steps + 1
+                       if s.wall_drift then
+                         reported = reported + 1
+                         drift = math.max(drift, s.wall_drift)
+                       end
+                     end}
+
+-- The sphere |x - (0, 0, z0)| = a through the film by least squares: |x|^2 = 2 z0 x3 + k.
+local n, sz, ss, szz, szs = c:info().vertices, 0, 0, 0, 0
+for v = 1, n do
+  local x = c:vertex(v)
+  local s = x[1] ^ 2 + x[2] ^ 2 + x[3] ^ 2
+  sz, ss, szz, szs = sz + x[3], ss + s, szz + x[3] ^ 2, szs + x[3] * s
+end
+local z0 = (n * szs - sz * ss) / (n * szz - sz * sz) / 2
+local dist, sum, lo, hi = {}, 0, math.huge, -math.huge
+for v = 1, n do
+  local x = c:vertex(v)
+  local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2 + (x[3] - z0) ^ 2)
+  sum, lo, hi = sum + d, math.min(lo, d), math.max(hi, d)
+end
+local a = sum / n
+-- The radius of the orthogonal cap of volume V0: 4 pi a^3 / 3 less the lens shared with |x| <= R.
+local function cap_volume(b)
+  local d = math.sqrt(R * R + b * b)
+  local lens = pi * (R + b - d) ^ 2 * (d * d + 2 * d * b - 3 * b * b + 2 * d * R + 6 * b * R
+                                       - 3 * R * R) / (12 * d)
+  return 4 * pi * b ^ 3 / 3 - lens
+end
+local blo, bhi = 0.1, 2
+for _ = 1, 60 do
+  local m = (blo + bhi) / 2
+  if cap_volume(m) < V0 then blo = m else bhi = m end
+end
+local predicted = (blo + bhi) / 2
+local V1 = true_volume()
+local ca = res.contact_angles
+print(("t = %g, %d steps, %.1f s: max drift %.2e, contact angles %.2f..%.2f, fitted sphere "
+       .. "radius %.5f (distances %+.2f%%..%+.2f%%), predicted %.5f (%+.2f%%), center %.5f vs "
+       .. "sqrt(R^2 + a^2) = %.5f, true volume %.6f -> %.6f (%+.3f%%), froth's volume loss %.2f%%")
+      :format(res.t, res.steps, res.wall_s, drift, ca.min, ca.max, a, 100 * (lo / a - 1),
+              100 * (hi / a - 1), predicted, 100 * (a / predicted - 1), z0,
+              math.sqrt(R * R + a * a), V0, V1, 100 * (V1 / V0 - 1), 100 * res.volume_loss))
+T.assert_equal(res.stop_reason, "T reached", "T = 0.5 reached")
+T.assert_true(res.max_energy_increase <= 0, "energy non-increasing at every step",
+              res.max_energy_increase)
+T.assert_equal(reported, steps, "every step reports the wall drift")
+T.assert_true(drift > 0, "a curved wall: some drift")
+T.assert_true(drift < 1e-4, "drift below 1e-4", drift)
+T.assert_true(ca.min >= 88.5 and ca.max <= 91.5, "contact angles 90 +- 1.5", ca.min .. " " .. ca.max)
+T.assert_true(lo >= 0.99 * a and hi <= 1.01 * a, "the film is a sphere", lo / a .. " " .. hi / a)
+T.assert_true(T.rel(z0, math.sqrt(R * R + a * a)) <= 0.005, "orthogonal to the wall", z0)
+T.assert_true(T.rel(a, predicted) <= 0.01, "the cap of the drop's volume", a / predicted)
+T.assert_true(T.rel(V1, V0) <= 0.005, "true volume kept", V1 / V0)
+T.summary()
