@@ -52,8 +52,11 @@ int l_area(lua_State* L) {
 }
 
 int l_volumes(lua_State* L) {
-    push_numbers(L, body_volumes(self(L).cluster));
-    return 1;
+    const Cluster& c = self(L).cluster;
+    return guarded(L, [&] { // lids evaluate the walls, and a user's wall function may fail
+        push_numbers(L, body_volumes(c));
+        return 1;
+    });
 }
 
 int l_sigma(lua_State* L) {
@@ -129,8 +132,11 @@ int l_walls(lua_State* L) {
 }
 
 int l_report(lua_State* L) {
-    push_report(L, make_report(self(L).cluster));
-    return 1;
+    const Cluster& c = self(L).cluster;
+    return guarded(L, [&] {
+        push_report(L, make_report(c));
+        return 1;
+    });
 }
 
 int l_step(lua_State* L) {

@@ -131,9 +131,19 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau, bool project_ont
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
         throw GeometryError("step: with tau = " + fmt(tau) + " the step would collapse " +
                             facet_name(s, f) + "; the cluster is unchanged (try a smaller tau)");
+    // The report evaluates the walls (lids, drift, contact angles); a user's wall function may
+    // fail there, and then the step must not have happened either.
+    std::vector<Vec3> X_before = c.positions();
+    const double t_before = c.time();
     c.set_positions(std::move(X));
-    c.set_time(c.time() + tau);
-    static_cast<Report&>(report) = make_report(c);
+    c.set_time(t_before + tau);
+    try {
+        static_cast<Report&>(report) = make_report(c);
+    } catch (const std::exception&) {
+        c.set_positions(std::move(X_before));
+        c.set_time(t_before);
+        throw;
+    }
     return report;
 }
 

@@ -47,6 +47,17 @@ std::vector<int> two_ring(const Cluster& c, const PairFacets& pf, int v, int s) 
     return ring;
 }
 
+/// True if vertex u is a corner of a facet of surface s whose normal is within the crease
+/// angle's cosine band of n (45 degrees): u is then on the same smooth part of the film.
+bool on_facet_facing(const Cluster& c, const PairFacets& pf, int u, int s, const Vec3& n) {
+    const int k = c.pair_index(u, s);
+    for (int x = pf.start[k]; x < pf.start[k + 1]; ++x) {
+        const Vec3 a = area_vector2(c.positions(), c.surface(s).triangles[pf.facet_index[x]]);
+        if (a.dot(n) > std::cos(M_PI / 4) * a.norm()) return true;
+    }
+    return false;
+}
+
 /// Unit direction in which film s leaves the line at x (tangent t), starting from the chord
 /// direction e1: fit w = a u + e r + b u^2 + c r^2 + d u r in the frame (e1, t, e2 = t x e1)
 /// and tilt e1 by the slope a.
@@ -70,6 +81,11 @@ Vec3 film_direction(const Cluster& c, const std::vector<int>& ring, int v, const
 }
 
 /// The angle (degrees) between films j and k that Young's law predicts when film i is third.
+/// Where the fitted film normal at a wall differs from the boundary facets' by more than this,
+/// the fit spans a crease and the facets' normal is used: on smooth films the two differ by
+/// about h kappa / 2, a few degrees.
+constexpr double kCreaseAngle = 10.0 * M_PI / 180.0;
+
 double young_angle(double si, double sj, double sk) {
     const double cosine = (si * si - sj * sj - sk * sk) / (2 * sj * sk);
     if (cosine < -1 || cosine > 1) return NAN; // no force balance exists for these tensions
@@ -207,9 +223,25 @@ AngleStats contact_angles(const Cluster& c) {
             }
             chord = (chord - chord.dot(t) * t).normalized();
             const int s = c.pair_surface(k);
-            const Vec3 into = film_direction(c, two_ring(c, pf, v, s), v, t, chord);
+            // The normal of the boundary facets, averaged: first order, but right at a crease
+            // (a box's edge standing on the wall), where a fit across the crease is not. The fit
+            // uses only vertices on facets that face the same way (not across a crease).
+            const Vec3 chord_normal = (facet_normal[at[k][0]].normalized() +
+                                       facet_normal[at[k][1]].normalized()).normalized();
+            std::vector<int> ring = two_ring(c, pf, v, s);
+            ring.erase(std::remove_if(ring.begin(), ring.end(),
+                                      [&](int u) {
+                                          return !on_facet_facing(c, pf, u, s, chord_normal);
+                                      }),
+                       ring.end());
+            const Vec3 into = film_direction(c, ring, v, t, chord);
             Vec3 nu = t.cross(into).normalized();
-            if (nu.dot(facet_normal[at[k][0]] + facet_normal[at[k][1]]) < 0) nu = -nu;
+            if (nu.dot(chord_normal) < 0) nu = -nu;
+            // On the crease itself (the two boundary facets 30+ degrees apart: a box corner) the
+            // film has no normal; the facets' mean is the one that meets the wall as they do.
+            const bool creased = facet_normal[at[k][0]].normalized().dot(
+                                     facet_normal[at[k][1]].normalized()) < std::cos(M_PI / 6);
+            if (creased || nu.dot(chord_normal) < std::cos(kCreaseAngle)) nu = chord_normal;
             for (int w : c.vertex_walls(v)) {
                 const double angle = angle_between(nu, c.walls()[w]->normal(c.position(v)));
                 acc.add(angle);

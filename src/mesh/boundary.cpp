@@ -115,24 +115,31 @@ void Cluster::find_lids(Body& body) const {
         int& id = lid_of[find_root(parent, e[0])];
         if (id < 0) {
             id = static_cast<int>(body.lids.size());
-            const std::vector<int> wa = vertex_walls(e[0]), wb = vertex_walls(e[1]);
-            int wall = wa.front();
-            for (int w : wa)
-                if (std::find(wb.begin(), wb.end(), w) != wb.end()) wall = w;
-            body.lids.push_back({{}, wall});
+            body.lids.push_back({});
         }
-        body.lids[id].edges.push_back(e);
+        Lid& lid = body.lids[id];
+        lid.edges.push_back(e);
+        const std::vector<int> wa = vertex_walls(e[0]), wb = vertex_walls(e[1]);
+        for (int w : wa) // the walls the edge lies on (attach_walls checked there is one)
+            if (std::find(wb.begin(), wb.end(), w) != wb.end() &&
+                std::find(lid.walls.begin(), lid.walls.end(), w) == lid.walls.end())
+                lid.walls.push_back(w);
     }
 }
 
 double lid_volume(const Cluster& c, const Lid& lid) {
-    const Wall& wall = *c.walls()[lid.wall];
     Vec3 center = Vec3::Zero();
     for (const auto& e : lid.edges) center += c.position(e[0]);
     center /= static_cast<double>(lid.edges.size());
-    // The fan's apex on the wall: exact for flat walls whatever point of the plane it is.
-    const Vec3 apex = wall.gradient(center).norm() > 0 ? wall.project(center)
-                                                        : c.position(lid.edges.front()[0]);
+    // The fan's apex on all the lid's walls (alternating projections: their common line or
+    // corner for planes). Any such point closes a flat lid exactly.
+    Vec3 apex = center;
+    for (int pass = 0; pass < (lid.walls.size() > 1 ? 50 : 1); ++pass)
+        for (int w : lid.walls) {
+            const Wall& wall = *c.walls()[w];
+            apex = wall.gradient(apex).norm() > 0 ? wall.project(apex)
+                                                  : c.position(lid.edges.front()[0]);
+        }
     double volume = 0;
     for (const auto& e : lid.edges)
         volume += apex.dot(c.position(e[1]).cross(c.position(e[0]))) / 6.0;

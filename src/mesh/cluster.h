@@ -47,12 +47,13 @@ struct BodyFace {
     int sign;
 };
 
-/// Where a body meets a wall: a closed loop of free boundary edges of the body's films, each
-/// directed as the body's outward-oriented facets traverse it. The lid is the part of the wall
-/// inside the loop; volumes close it by a fan from the loop's center projected onto the wall.
+/// Where a body meets walls: a closed loop of free boundary edges of the body's films, each
+/// directed as the body's outward-oriented facets traverse it. The lid is the part of the walls
+/// inside the loop (on several walls when the body sits in a corner); volumes close it by a fan
+/// from the loop's center projected onto all of those walls.
 struct Lid {
     std::vector<std::array<int, 2>> edges;
-    int wall;
+    std::vector<int> walls; ///< the walls its edges lie on
 };
 
 struct Body {
@@ -172,9 +173,11 @@ class Cluster {
 /// and the rest renumbered by first use. Returns the old ids of the surfaces kept.
 std::vector<int> drop_wall_lids(ClusterSpec& spec);
 
-/// The volume the lid adds to its body: the fan from the loop's center (projected onto the
-/// wall) to the loop's edges, signed like the divergence-theorem sum of the body's facets.
-/// Exact for flat walls; on curved walls the lid's bulge off that fan is not counted.
+/// The volume the lid adds to its body: the fan from the loop's center, projected onto all the
+/// lid's walls (their common point), to the loop's edges, signed like the divergence-theorem sum
+/// of the body's facets. Exact for flat walls, also for a lid on two or three planes (each fan
+/// triangle lies in the plane of its edge); on curved walls the lid's bulge off that fan is not
+/// counted.
 double lid_volume(const Cluster& c, const Lid& lid);
 
 } // namespace froth
