@@ -140,10 +140,14 @@ double lid_volume(const Cluster& c, const Lid& lid) {
             apex = wall.gradient(apex).norm() > 0 ? wall.project(apex)
                                                   : c.position(lid.edges.front()[0]);
         }
-    double volume = 0;
-    for (const auto& e : lid.edges)
-        volume += apex.dot(c.position(e[1]).cross(c.position(e[0]))) / 6.0;
-    return volume;
+    // On one wall its own flux (curved walls count the lid's bulge); across walls flat fans.
+    double flux = 0;
+    for (const auto& e : lid.edges) {
+        const Vec3 &a = c.position(e[0]), &b = c.position(e[1]);
+        flux += lid.walls.size() == 1 ? c.walls()[lid.walls[0]]->fan_flux(apex, a, b)
+                                      : 0.5 * apex.dot(b.cross(a));
+    }
+    return flux / 3.0;
 }
 
 std::vector<int> drop_wall_lids(ClusterSpec& spec) {

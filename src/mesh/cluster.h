@@ -176,8 +176,9 @@ std::vector<int> drop_wall_lids(ClusterSpec& spec);
 /// The volume the lid adds to its body: the fan from the loop's center, projected onto all the
 /// lid's walls (their common point), to the loop's edges, signed like the divergence-theorem sum
 /// of the body's facets. Exact for flat walls, also for a lid on two or three planes (each fan
-/// triangle lies in the plane of its edge); on curved walls the lid's bulge off that fan is not
-/// counted.
+/// triangle lies in the plane of its edge). On one curved wall each fan triangle counts the
+/// flux of the wall patch it spans (Wall::fan_flux: exact for spheres up to O(h^2), the flat
+/// triangle for other walls, which leaves out the lid's bulge).
 double lid_volume(const Cluster& c, const Lid& lid);
 
 } // namespace froth

@@ -68,6 +68,20 @@ class SphereWall final : public Wall {
         return "sphere |x - " + point_text(c_) + "| = " + fmt(r_);
     }
 
+    /// The radial projection of the triangle onto the sphere, c . S + R^3 Omega: with x = c + R n
+    /// on the sphere, x . n = c . n + R. S is the flat triangle's vector area (the arcs differ
+    /// from its sides by O(h^3)), Omega its signed solid angle seen from c (Van Oosterom and
+    /// Strackee), positive when the triangle faces away from c.
+    double fan_flux(const Vec3& apex, const Vec3& a, const Vec3& b) const override {
+        const Vec3 u1 = apex - c_, u2 = b - c_, u3 = a - c_;
+        const double l1 = u1.norm(), l2 = u2.norm(), l3 = u3.norm();
+        const double omega = 2 * std::atan2(u1.dot(u2.cross(u3)),
+                                            l1 * l2 * l3 + u1.dot(u2) * l3 + u1.dot(u3) * l2 +
+                                                u2.dot(u3) * l1);
+        const Vec3 S = 0.5 * (b - apex).cross(a - apex);
+        return c_.dot(S) + r_ * r_ * r_ * omega;
+    }
+
   private:
     Vec3 c_;
     double r_;
@@ -129,6 +143,10 @@ class FunctionWall final : public Wall {
 };
 
 } // namespace
+
+double Wall::fan_flux(const Vec3& apex, const Vec3& a, const Vec3& b) const {
+    return 0.5 * apex.dot(b.cross(a));
+}
 
 double Wall::distance(const Vec3& x) const {
     const double f = value(x);

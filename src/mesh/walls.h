@@ -5,6 +5,7 @@
 /// F / |grad F| do not depend on the scaling), so a user's F need not be a distance.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross products
 
 #include <functional>
 #include <memory>
@@ -27,6 +28,11 @@ class Wall {
     /// True when the wall is a union of planes: then a fan from a point on the wall closes a
     /// body's lid exactly (volumes) and the linearised constraint keeps vertices on it exactly.
     virtual bool is_flat() const { return false; }
+    /// The flux integral of x . nu over the patch of the wall that the triangle (apex, b, a)
+    /// spans, nu oriented like the triangle: 3 times the volume it adds to a body whose lid it is
+    /// (seed (1.25); numerics.md §1). The default is the flat triangle's own flux, exact on
+    /// planes; curved walls may do better.
+    virtual double fan_flux(const Vec3& apex, const Vec3& a, const Vec3& b) const;
 
     /// The first-order distance |F| / |grad F| (exact for the presets).
     double distance(const Vec3& x) const;

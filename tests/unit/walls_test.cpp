@@ -551,6 +551,27 @@ TEST(Lids, BodyInTheCornerOfTwoWalls) {
 // ---------------------------------------------------------------------------------------------
 // PositionBasis
 
+// A cup standing on the sphere wall |x| = 1 from outside, its rim on the circle z = z0: the
+// sphere's cap above z0 pokes into the cup and is not in the body. The lid is the sphere patch
+// inside the rim (Wall::fan_flux of the sphere wall), so the body's volume is that of the same
+// cup on the plane z = z0 less the cap segment pi h^2 (3 - h) / 3, h = 1 - z0, up to the rim
+// polygon's O(K^-2) (its geodesic arcs against the circle).
+TEST(Lids, SphereWallLidIsTheSpherePatchInsideTheRim) {
+    const double z0 = 0.6, rho = std::sqrt(1 - z0 * z0), h = 1 - z0;
+    const double segment = M_PI * h * h * (3 - h) / 3;
+    double previous = INFINITY;
+    for (int K : {32, 64, 128}) {
+        const ClusterSpec s = cup(rho, 1.0, 4, K, z0);
+        const double on_plane = body_volumes(Cluster(with_walls(s, {floor_plane(z0)})))[0];
+        const double on_sphere =
+            body_volumes(Cluster(with_walls(s, {make_sphere_wall(Vec3::Zero(), 1)})))[0];
+        const double error = std::abs(on_plane - on_sphere - segment);
+        EXPECT_LT(error, 0.25 * segment * 64.0 / (K * K)) << "K = " << K;
+        if (K > 32) EXPECT_LT(error, 0.3 * previous) << "second order in 1/K";
+        previous = error;
+    }
+}
+
 void expect_tangent_bases(const Cluster& c) {
     const PositionBasis P(c);
     int total = 0;
