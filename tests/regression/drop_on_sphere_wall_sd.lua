@@ -8,8 +8,7 @@
 -- (1e-3 h); contact angles 90 +- 1.5 at the end; the film a sphere (least-squares fit with its
 -- center on the x3 axis: distances within 1% of the fitted radius a) orthogonal to the wall
 -- (center height within 0.5% of sqrt(R^2 + a^2)); a within 1% of the radius predicted from the
--- volume; froth's volume (lid: the sphere patch under the drop) kept within 0.5%, and the sliver
--- a flat lid would miss is in it (the volume differs from the flat-fan volume by the cap).
+-- volume; froth's volume (lid: the sphere patch under the drop) kept within 0.5%.
 -- Measured when written (1.5 s): max drift 3.07e-5, angles 89.45..90.49, fitted a = 0.63515
 -- (distances -0.25%..+0.18%), predicted 0.63348 (+0.26%), center 2.09882 vs 2.09843, volume
 -- -0.002% (froth's volume_loss with the sphere patch as lid; a flat fan lid reported 2.04%).
