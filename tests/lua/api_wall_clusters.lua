@@ -82,15 +82,13 @@ common(cub, "cuboid")
 T.assert_near(cub:volumes()[1], 6, 1e-11, "1 x 2 x 3 cuboid")
 T.assert_near(cub:area(), 18, 1e-11, "its four sides")
 
--- drop_on_sphere_wall: the sheared half ball keeps the half ball's volume; the volume froth
--- reports closes the lid by a fan, which adds the sliver between the fan and the sphere cap
--- under the drop: pi hc^2 (3R - hc) / 3 - pi r^2 hc / 3, hc = R - sqrt(R^2 - r^2).
+-- drop_on_sphere_wall: the sheared half ball keeps the half ball's volume; froth's volume
+-- closes the lid by the sphere patch under the drop, so it is the half ball's 2 pi r^3 / 3 up
+-- to the mesh (0.70612 at h = 0.15: -1.7%; a flat fan lid would add a sliver of 0.034).
 local drop = froth.drop_on_sphere_wall{h = 0.15}
 common(drop, "drop")
 local R, r = 2, 0.7
-local hc = R - math.sqrt(R * R - r * r)
-local sliver = pi * hc ^ 2 * (3 * R - hc) / 3 - pi * r * r * hc / 3
-T.assert_true(rel(drop:volumes()[1], 2 * pi * r ^ 3 / 3 + sliver) < 0.02, "drop volume",
+T.assert_true(rel(drop:volumes()[1], 2 * pi * r ^ 3 / 3) < 0.02, "drop volume",
               drop:volumes()[1])
 ca = drop:report().contact_angles
 local built = 90 - math.deg(math.asin(r / R))   -- the sheared rim meets the sphere at 69.5
