@@ -5,39 +5,8 @@
 local M = {}
 
 local pi = math.pi
-
--- Errors are ordinary Lua errors whose message starts with the builder's name, without a
--- position (as the C builders do).
-local function fail(name, fmt, ...)
-  error(name .. ": " .. fmt:format(...), 0)
-end
-
--- The option table, checked against the known keys (as the C builders' option tables are).
-local function options(name, opts, known)
-  if opts == nil then return {} end
-  if type(opts) ~= "table" then
-    fail(name, "expected an option table {...}, got %s", type(opts))
-  end
-  for k in pairs(opts) do
-    if type(k) ~= "string" then fail(name, "option keys must be names") end
-    if not known[k] then fail(name, "unknown option '%s'", k) end
-  end
-  return opts
-end
-
-local function number(name, opts, key, default)
-  local v = opts[key]
-  if v == nil then return default end
-  if math.type(v) == nil then fail(name, "option '%s' must be a number", key) end
-  return v
-end
-
-local function boolean(name, opts, key, default)
-  local v = opts[key]
-  if v == nil then return default end
-  if type(v) ~= "boolean" then fail(name, "option '%s' must be true or false", key) end
-  return v
-end
+local check = require("froth.options")
+local fail, options, number, boolean = check.fail, check.options, check.number, check.boolean
 
 -- froth.fragment with its messages renamed ("fragment: ..." -> "torus_bubble: ...") so that
 -- errors name the builder the user called. h = nil asks fragment for about `vertices`.

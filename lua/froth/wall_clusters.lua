@@ -8,36 +8,8 @@
 local M = {}
 
 local pi = math.pi
-
--- The option helpers of froth.clusters (lua/froth/clusters.lua), same behaviour and messages.
-local function fail(name, fmt, ...)
-  error(name .. ": " .. fmt:format(...), 0)
-end
-
-local function options(name, opts, known)
-  if opts == nil then return {} end
-  if type(opts) ~= "table" then
-    fail(name, "expected an option table {...}, got %s", type(opts))
-  end
-  for k in pairs(opts) do
-    if type(k) ~= "string" then fail(name, "option keys must be names") end
-    if not known[k] then fail(name, "unknown option '%s'", k) end
-  end
-  return opts
-end
-
-local function number(name, opts, key, default)
-  local v = opts[key]
-  if v == nil then return default end
-  if math.type(v) == nil then fail(name, "option '%s' must be a number", key) end
-  return v
-end
-
-local function positive(name, opts, key, default)
-  local v = number(name, opts, key, default)
-  if not (v > 0 and v < math.huge) then fail(name, "%s must be positive, got %s", key, v) end
-  return v
-end
+local check = require("froth.options")
+local fail, options, number, positive = check.fail, check.options, check.number, check.positive
 
 -- The mesh size: h, or about `vertices` vertices on the films that remain. fragment aims its
 -- vertex count at the films *and* the lids on the walls, so the count asked of it is scaled by
