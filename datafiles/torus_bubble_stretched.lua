@@ -2,6 +2,12 @@
 -- R = 2, r = 0.5, stretched by the seed's maps G1 and G2 so that it is not rotationally
 -- symmetric. Under surface diffusion the ring thins at one point and tears (seed: t ~ 0.91);
 -- froth's topology watch stops the run there and says where.
+-- Known difference: froth stops much earlier, at t ~ 0.27 (a crossing of the band, surface 4,
+-- with the outer torus, surface 3, at 5300 vertices; a collapsing facet of surface 3 at
+-- t = 0.267 with 12000 vertices, so not a resolution effect), and our torus/ball volume ratio
+-- is 0.21 where the seed reports 0.25. With r = 0.54, which gives the seed's 0.25, the stop
+-- moves only to t = 0.33. So the seed's construction of this cluster differs from ours in a
+-- way the text does not pin down (see the issue 3 notes).
 --
 -- Sample runs:  froth datafiles/torus_bubble_stretched.lua
 --               FROTH_SMOKE=1 froth datafiles/torus_bubble_stretched.lua (ctest: 3 steps)
