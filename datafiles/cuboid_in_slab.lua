@@ -23,16 +23,6 @@ local info = c:info()
 print(("%g x %g x %g cuboid in the slab 0 < x3 < %g: %d vertices, %d facets")
       :format(opts.a, opts.b, opts.rho, opts.rho, info.vertices, info.facets))
 
-local function radii()
-  local n, sum, lo, hi = c:info().vertices, 0, math.huge, -math.huge
-  for v = 1, n do
-    local x = c:vertex(v)
-    local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2)
-    sum, lo, hi = sum + d, math.min(lo, d), math.max(hi, d)
-  end
-  return sum / n, lo, hi
-end
-
 local drift = 0
 local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
                    T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
@@ -41,7 +31,7 @@ local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
                    on_step = function(s) drift = math.max(drift, s.wall_drift) end}
 
 local exact = math.sqrt(c:volumes()[1] / (math.pi * opts.rho))
-local mean, lo, hi = radii()
+local mean, lo, hi = require("froth.measure").axis_distances(c)
 local ca = r.contact_angles
 print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
 print(("radius: mean %.5f  min %.5f  max %.5f   cylinder of the same volume sqrt(V/(pi rho)) = "

@@ -24,17 +24,6 @@ local info = c:info()
 print(("cylinder (5.3), rho = %g, alpha = %g: %d vertices, %d facets (seed: K = 4160, J = 8192)")
       :format(opts.rho, opts.alpha, info.vertices, info.facets))
 
--- mean, min and max distance of the vertices from the x3 axis
-local function radii()
-  local n, sum, lo, hi = c:info().vertices, 0, math.huge, -math.huge
-  for v = 1, n do
-    local x = c:vertex(v)
-    local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2)
-    sum, lo, hi = sum + d, math.min(lo, d), math.max(hi, d)
-  end
-  return sum / n, lo, hi
-end
-
 local drift = 0
 local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
                    T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
@@ -43,7 +32,7 @@ local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
                    on_step = function(s) drift = math.max(drift, s.wall_drift) end}
 
 local exact = math.sqrt(c:volumes()[1] / (math.pi * opts.rho))
-local mean, lo, hi = radii()
+local mean, lo, hi = require("froth.measure").axis_distances(c)
 local ca = r.contact_angles
 print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
 print(("radius: mean %.5f  min %.5f  max %.5f   cylinder of the same volume sqrt(V/(pi rho)) = "

@@ -24,13 +24,9 @@ print(("cylinder (5.3), rho = %g, alpha = %g: %d vertices, %d facets (seed: K = 
 
 -- the neck: the smallest distance from the x3 axis near x3 = rho / 2
 local function neck()
-  local d = math.huge
-  for v = 1, c:info().vertices do
-    local x = c:vertex(v)
-    if math.abs(x[3] - opts.rho / 2) < opts.rho / 16 then
-      d = math.min(d, math.sqrt(x[1] ^ 2 + x[2] ^ 2))
-    end
-  end
+  local _, d = require("froth.measure").axis_distances(c, function(x)
+    return math.abs(x[3] - opts.rho / 2) < opts.rho / 16
+  end)
   return d
 end
 

@@ -18,13 +18,7 @@ local drift = 0
 local r = c:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-6, T = 0.2, progress = false,
                    on_step = function(s) drift = math.max(drift, s.wall_drift) end}
 local exact = math.sqrt(c:volumes()[1] / (math.pi * rho))
-local n, sum, lo, hi = c:info().vertices, 0, math.huge, -math.huge
-for v = 1, n do
-  local x = c:vertex(v)
-  local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2)
-  sum, lo, hi = sum + d, math.min(lo, d), math.max(hi, d)
-end
-local mean = sum / n
+local mean, lo, hi = require("froth.measure").axis_distances(c)
 local ca = r.contact_angles
 print(("t = %g, %d steps, %.1f s: radius mean %.5f vs sqrt(V/(pi rho)) = %.5f (%+.3f%%), "
        .. "min %+.3f%% max %+.3f%%, contact angles %.2f..%.2f, volume loss %.4f%%, drift %.1e")

@@ -16,11 +16,9 @@ local drift = 0
 local r = c:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-6, T = 2, progress = false,
                    on_step = function(s) drift = math.max(drift, s.wall_drift) end}
 -- the neck: the smallest distance from the axis of the vertices within 0.5 of x3 = 4
-local neck = math.huge
-for v = 1, c:info().vertices do
-  local x = c:vertex(v)
-  if math.abs(x[3] - 4) < 0.5 then neck = math.min(neck, math.sqrt(x[1] ^ 2 + x[2] ^ 2)) end
-end
+local _, neck = require("froth.measure").axis_distances(c, function(x)
+  return math.abs(x[3] - 4) < 0.5
+end)
 local t_stop = r.event and r.event.t or r.t
 print(("stopped at t = %g after %d steps (%.1f s; seed: t ~ 1.487, %+.1f%%): %s; neck radius %.3f, "
        .. "volume loss %.3f%%, drift %.1e"):format(t_stop, r.steps, r.wall_s,
