@@ -15,7 +15,9 @@ using Eigen::Vector3d;
 
 namespace {
 
-std::string term_name(std::size_t l) { return "anisotropy: term " + std::to_string(l + 1); }
+std::string term_name(std::size_t l) {
+    return "anisotropy: term " + std::to_string(l + 1);
+}
 
 void validate_G(const Matrix3d& G, std::size_t l) {
     if (!G.allFinite()) throw InvalidInput(term_name(l) + ": G has a non-finite entry");
@@ -115,7 +117,9 @@ Anisotropy Anisotropy::isotropic(double sigma) {
     return Anisotropy({sigma * sigma * Matrix3d::Identity()}, 1.0);
 }
 
-Anisotropy Anisotropy::ellipsoidal(const Matrix3d& G) { return Anisotropy({G}, 1.0); }
+Anisotropy Anisotropy::ellipsoidal(const Matrix3d& G) {
+    return Anisotropy({G}, 1.0);
+}
 
 Anisotropy Anisotropy::l1(double eps, double r) {
     // (5.6) = (1.17) with theta = (0, (pi/2,0,0), (0,pi/2,0)) (Fig. 2 left): the three terms are
@@ -132,7 +136,9 @@ Anisotropy Anisotropy::hexagonal(double eps) {
                        1.0);
 }
 
-Anisotropy Anisotropy::fig3_left(double eps) { return l1(eps, 30.0); }
+Anisotropy Anisotropy::fig3_left(double eps) {
+    return l1(eps, 30.0);
+}
 
 Anisotropy Anisotropy::fig3_right(double eps) {
     const double pi = std::numbers::pi;
@@ -163,12 +169,14 @@ double Anisotropy::gamma(const Vector3d& p) const {
     if (gmax == 0.0) return 0.0;
     if (r_ == 1.0) {
         double s = 0.0;
-        for (double x : g) s += x;
+        for (double x : g)
+            s += x;
         return s;
     }
     // gamma = gmax (sum (g_l/gmax)^r)^(1/r): no overflow for large r.
     double s = 0.0;
-    for (double x : g) s += std::pow(x / gmax, r_);
+    for (double x : g)
+        s += std::pow(x / gmax, r_);
     return gmax * std::pow(s, 1.0 / r_);
 }
 
@@ -228,8 +236,10 @@ double Anisotropy::gamma_star(const Vector3d& q_in, Vector3d* argmax) const {
         const double v = qp / gamma(p);
         if (v > best_val) best_val = v, best = p;
     };
-    for (const Vector3d& p : sphere_samples()) consider(p);
-    for (const Matrix3d& G : G_) consider(G.ldlt().solve(q));
+    for (const Vector3d& p : sphere_samples())
+        consider(p);
+    for (const Matrix3d& G : G_)
+        consider(G.ldlt().solve(q));
 
     // gamma*(q) = 1 / min { gamma(p) : q . p = 1 }: minimise the convex phi(s) = gamma(p0 + T s)
     // on the plane q . p = 1 (p0 = q, T an orthonormal basis of q^perp) by damped Newton.
@@ -294,9 +304,11 @@ ElementMatrix element_matrix(const Anisotropy& gamma, const std::array<Vector3d,
         const double A = 0.5 * gamma.gamma_term(l, n);
         Eigen::Matrix3d K;
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) K(a, b) = e[a].dot(Gt * e[b]) / (4.0 * A);
+            for (int b = 0; b < 3; ++b)
+                K(a, b) = e[a].dot(Gt * e[b]) / (4.0 * A);
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) M.block<3, 3>(3 * a, 3 * b) += w[l] * K(a, b) * Gt;
+            for (int b = 0; b < 3; ++b)
+                M.block<3, 3>(3 * a, 3 * b) += w[l] * K(a, b) * Gt;
     }
     return M;
 }

@@ -18,7 +18,7 @@ namespace froth {
 
 /// One anisotropy gamma_i of the form (1.15); immutable after construction.
 class Anisotropy {
-public:
+  public:
     /// gamma from the matrices G_l (each symmetric positive definite) and r >= 1. Throws
     /// InvalidInput naming the term (1-based) and the value when a G_l is not symmetric, not
     /// positive definite or not finite, when r < 1 or not finite, or when there is no term.
@@ -72,7 +72,7 @@ public:
     /// parallel to q (Cahn–Hoffmann). gamma*(0) = 0.
     double gamma_star(const Eigen::Vector3d& q, Eigen::Vector3d* argmax = nullptr) const;
 
-private:
+  private:
     std::vector<Eigen::Matrix3d> G_;
     std::vector<Eigen::Matrix3d> Gt_;
     double r_ = 1.0;

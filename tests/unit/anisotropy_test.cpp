@@ -58,8 +58,8 @@ Tri random_triangle(std::mt19937& rng) {
         double min_angle = 180.0;
         for (int a = 0; a < 3; ++a) {
             const Vector3d u = x[(a + 1) % 3] - x[a], v = x[(a + 2) % 3] - x[a];
-            min_angle = std::min(min_angle, std::acos(u.normalized().dot(v.normalized())) *
-                                                180.0 / std::numbers::pi);
+            min_angle = std::min(min_angle, std::acos(u.normalized().dot(v.normalized())) * 180.0 /
+                                                std::numbers::pi);
         }
         if (min_angle > 15.0) return x;
     }
@@ -164,8 +164,7 @@ TEST(AnisotropyGamma, HomogeneousEvenAndConvex) {
             // the Hessian is positive semidefinite with p in its kernel
             const Matrix3d H = g.gamma_hessian(p);
             const Eigen::SelfAdjointEigenSolver<Matrix3d> eig(H);
-            EXPECT_GE(eig.eigenvalues().minCoeff(), -1e-9 * eig.eigenvalues().maxCoeff())
-                << n.name;
+            EXPECT_GE(eig.eigenvalues().minCoeff(), -1e-9 * eig.eigenvalues().maxCoeff()) << n.name;
             EXPECT_LT((H * p).norm(), 1e-9 * H.norm() * p.norm()) << n.name;
         }
     }
@@ -234,8 +233,7 @@ TEST(AnisotropyStar, AxisValuesOfTheL1Family) {
     // By symmetry gamma'(e1) is parallel to e1, so gamma*(e1) = 1 / gamma(e1):
     // 1/(1 + 2 eps) for (5.6), (1 + 2 eps^30)^(-1/30) for Fig. 3 left.
     for (double eps : {0.1, 0.01}) {
-        EXPECT_NEAR(Anisotropy::l1(eps).gamma_star(Vector3d(0, 0, 2)), 2.0 / (1 + 2 * eps),
-                    1e-13);
+        EXPECT_NEAR(Anisotropy::l1(eps).gamma_star(Vector3d(0, 0, 2)), 2.0 / (1 + 2 * eps), 1e-13);
         EXPECT_NEAR(Anisotropy::l1(eps, 30).gamma_star(Vector3d(0, -1, 0)),
                     std::pow(1 + 2 * std::pow(eps, 30), -1.0 / 30), 1e-13);
     }
@@ -324,10 +322,11 @@ TEST(AnisotropyElement, MatrixTimesPositionsIsTheEnergyGradient) {
         for (int t = 0; t < 5; ++t) {
             const Tri x = random_triangle(rng);
             const Vector3d nu = (x[1] - x[0]).cross(x[2] - x[0]).normalized();
-            const ElementMatrix M = n.gamma.r() == 1.0 ? element_matrix(n.gamma, x)
-                                                       : element_matrix(n.gamma, x, nu);
+            const ElementMatrix M =
+                n.gamma.r() == 1.0 ? element_matrix(n.gamma, x) : element_matrix(n.gamma, x, nu);
             Eigen::Matrix<double, 9, 1> X, fd;
-            for (int a = 0; a < 3; ++a) X.segment<3>(3 * a) = x[a];
+            for (int a = 0; a < 3; ++a)
+                X.segment<3>(3 * a) = x[a];
             for (int k = 0; k < 9; ++k) {
                 Tri xp = x, xm = x;
                 xp[k / 3][k % 3] += h;
@@ -357,7 +356,8 @@ TEST(AnisotropyElement, SymmetricSemidefiniteWithTranslationsInTheKernel) {
             EXPECT_GT(eig.eigenvalues().maxCoeff(), 0.0) << n.name;
             for (int d = 0; d < 3; ++d) {
                 Eigen::Matrix<double, 9, 1> T = Eigen::Matrix<double, 9, 1>::Zero();
-                for (int a = 0; a < 3; ++a) T[3 * a + d] = 1.0;
+                for (int a = 0; a < 3; ++a)
+                    T[3 * a + d] = 1.0;
                 EXPECT_LT((M * T).norm(), 1e-13 * M.norm()) << n.name << " translation " << d;
             }
         }
@@ -407,8 +407,11 @@ TEST(AnisotropyElement, DegenerateTriangleAndMissingNormalAreErrors) {
 TEST(AnisotropyInput, InvalidDefinitionsAreClearErrors) {
     Matrix3d asym = Matrix3d::Identity();
     asym(0, 1) = 0.5;
-    expect_invalid([&] { Anisotropy({Matrix3d::Identity(), asym}); },
-                   {"term 2", "not symmetric", "0.5"});
+    expect_invalid(
+        [&] {
+            Anisotropy({Matrix3d::Identity(), asym});
+        },
+        {"term 2", "not symmetric", "0.5"});
     const Matrix3d indef = Vector3d(1, -2, 1).asDiagonal();
     expect_invalid([&] { Anisotropy({indef}); }, {"term 1", "not positive definite", "-2"});
     expect_invalid([&] { Anisotropy({Matrix3d::Zero()}); }, {"term 1", "positive definite"});
