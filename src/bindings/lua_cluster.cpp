@@ -341,19 +341,7 @@ void push_step_report(lua_State* L, const StepReport& r) {
     lua_setfield(L, -2, "refactorized");
 }
 
-void register_cluster_type(lua_State* L) {
-    if (!luaL_newmetatable(L, kClusterType)) {
-        lua_pop(L, 1);
-        return;
-    }
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
-    lua_pushcfunction(L, l_gc);
-    lua_setfield(L, -2, "__gc");
-    lua_pushcfunction(L, l_tostring);
-    lua_setfield(L, -2, "__tostring");
-    lua_pop(L, 1);
-}
+void register_cluster_type(lua_State* L) { register_type(L, kClusterType, methods, l_gc, l_tostring); }
 
 void push_cluster(lua_State* L, ClusterSpec spec) {
     auto handle = std::make_shared<ClusterHandle>(Cluster(std::move(spec)));

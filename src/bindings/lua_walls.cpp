@@ -229,19 +229,7 @@ const luaL_Reg constructors[] = {
 
 } // namespace
 
-void register_wall_type(lua_State* L) {
-    if (!luaL_newmetatable(L, kWallType)) {
-        lua_pop(L, 1);
-        return;
-    }
-    luaL_newlib(L, methods);
-    lua_setfield(L, -2, "__index");
-    lua_pushcfunction(L, l_gc);
-    lua_setfield(L, -2, "__gc");
-    lua_pushcfunction(L, l_tostring);
-    lua_setfield(L, -2, "__tostring");
-    lua_pop(L, 1);
-}
+void register_wall_type(lua_State* L) { register_type(L, kWallType, methods, l_gc, l_tostring); }
 
 void add_wall_constructors(lua_State* L) { luaL_setfuncs(L, constructors, 0); }
 

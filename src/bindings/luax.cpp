@@ -116,4 +116,20 @@ void Options::finish() {
     lua_remove(L_, known_);
 }
 
+void register_type(lua_State* L, const char* type_name, const luaL_Reg* methods,
+                   lua_CFunction gc, lua_CFunction tostring) {
+    if (!luaL_newmetatable(L, type_name)) {
+        lua_pop(L, 1);
+        return;
+    }
+    lua_newtable(L);
+    luaL_setfuncs(L, methods, 0);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, gc);
+    lua_setfield(L, -2, "__gc");
+    lua_pushcfunction(L, tostring);
+    lua_setfield(L, -2, "__tostring");
+    lua_pop(L, 1);
+}
+
 } // namespace froth::lua

@@ -96,6 +96,10 @@ template <class Range> void push_integers(lua_State* L, const Range& values, lon
     }
 }
 
+/// Creates the metatable `type_name` once per state: __index = the methods, __gc, __tostring.
+void register_type(lua_State* L, const char* type_name, const luaL_Reg* methods,
+                   lua_CFunction gc, lua_CFunction tostring);
+
 /// Checks that argument idx is an integer id in 1..n and returns it 0-based; the message
 /// names the kind ("surface 7 does not exist (the cluster has surfaces 1..3)").
 int check_id(lua_State* L, int idx, int n, const char* kind, const char* kinds);
