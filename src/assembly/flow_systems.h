@@ -1,6 +1,6 @@
 #pragma once
-/// The linear systems of one time step of the isotropic schemes (numerics.md §5), assembled in
-/// the unknowns of the shared-vertex cluster. Positions vertex by vertex: dX_v = T_v y_v
+/// The linear systems of one time step of the schemes (3.7)/(3.8) and (3.10)/(3.11) (numerics.md
+/// §5), assembled in the unknowns of the shared-vertex cluster. Positions vertex by vertex: dX_v = T_v y_v
 /// (position_basis.h; T_v = I off the walls).
 ///
 /// Mean curvature flow, (3.5a,b) with kappa eliminated as in (4.6b) (mass lumping makes
@@ -9,12 +9,15 @@
 /// Surface diffusion, (3.6a,b) with kappa = Z k (kappa_basis.h), symmetric saddle point:
 ///   [ A         N Z        ] [dX]   [-A X^m]
 ///   [ Z^T N^T  -tau Z^T A_s Z ] [k ] = [  0   ]
-/// A = sum_i sigma_i (P1 stiffness of Gamma_i) x I_3, A_s = per-surface scalar stiffness,
-/// N maps kappa_iv to m_iv omega_iv at vertex v.
+/// A = sum_i sigma_i (P1 stiffness of Gamma_i) x I_3 on isotropic surfaces and the anisotropic
+/// A_gamma of (3.9) on the others (numerics.md §4), A_s = per-surface scalar stiffness weighted
+/// by beta_i(nu_sigma), N maps kappa_iv to m_iv omega_iv at vertex v; with mobilities the
+/// lumped masses in (4.6b) become m_iv^2 / mb_iv.
 
 #include "assembly/kappa_basis.h"
 #include "assembly/position_basis.h"
 #include "assembly/sparse_builder.h"
+#include "anisotropy/anisotropy.h"
 #include "geometry/geometry.h"
 
 #include <Eigen/Core>
@@ -25,15 +28,26 @@ namespace froth {
 /// traversed cyclically. Symmetric, rows sum to zero, and K X = gradient of the area.
 Eigen::Matrix3d local_stiffness(const Vec3& x0, const Vec3& x1, const Vec3& x2);
 
-/// y = A X for the sigma-weighted vector stiffness (the energy gradient: A X = grad E).
-Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X);
+/// The normals nu^{m+1} at which (3.9) weighs the terms of an r > 1 anisotropy, per surface and
+/// facet (the previous iterate of the lagged iteration, numerics.md §5). Surfaces with r = 1
+/// ignore them; null (or an empty entry) means each facet's own normal on X^m.
+using FacetNormals = std::vector<std::vector<Vec3>>;
+
+/// Unit facet normals of the cluster's surfaces at positions X.
+FacetNormals facet_normals(const Cluster& c, const std::vector<Vec3>& X);
+
+/// y = A_gamma X, the stiffness built on the cluster's current positions applied to X. For
+/// r = 1 (and isotropic surfaces) A_gamma X^m = grad E_gamma(X^m) (1.24b).
+Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
+                                const FacetNormals* lagged = nullptr);
 
 /// The systems in the reduced position unknowns y of P (dX_v = T_v y_v, (3.10)/(3.11)); with
-/// no walls P is the identity and these are (3.5)/(3.6).
+/// no walls P is the identity and these are (3.7)/(3.8) ((3.5)/(3.6) when isotropic).
 void assemble_mcf(const Cluster& c, const PairGeometry& g, const PositionBasis& P, double tau,
-                  SparseBuilder& M, Eigen::VectorXd& rhs);
+                  const FacetNormals* lagged, SparseBuilder& M, Eigen::VectorXd& rhs);
 
 void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
-                 const PositionBasis& P, double tau, SparseBuilder& M, Eigen::VectorXd& rhs);
+                 const PositionBasis& P, double tau, const FacetNormals* lagged,
+                 SparseBuilder& M, Eigen::VectorXd& rhs);
 
 } // namespace froth

@@ -27,6 +27,10 @@ struct GeometryError : Error {
 struct SolverError : Error {
     using Error::Error;
 };
+/// An iteration did not converge (the lagged fixed-point iteration of an r > 1 anisotropy).
+struct ConvergenceError : SolverError {
+    using SolverError::SolverError;
+};
 /// A file could not be read or written.
 struct IoError : Error {
     using Error::Error;

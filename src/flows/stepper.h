@@ -1,7 +1,7 @@
 #pragma once
-/// Time stepping of the isotropic schemes of the seed: mean curvature flow (3.5a,b) solved as
-/// the SPD system (4.6b) on CHOLMOD, surface diffusion (3.6a,b) as a symmetric saddle point on
-/// UMFPACK (numerics.md §5). Each flow's system keeps its sparsity pattern and symbolic
+/// Time stepping of the seed's schemes: mean curvature flow (3.7a,b)/(3.10a,b) solved as the SPD
+/// system (4.6b) on CHOLMOD, surface diffusion (3.8a,b)/(3.11a,b) as a symmetric saddle point on
+/// UMFPACK (numerics.md §5); r > 1 anisotropies by the lagged fixed-point iteration of §4.2. Each flow's system keeps its sparsity pattern and symbolic
 /// factorisation for the life of the stepper; a numeric factorisation is reused across steps
 /// as long as it preconditions GMRES well (solvers/sparse_solvers.h).
 
@@ -42,6 +42,23 @@ struct StepReport : Report {
     int unknowns = 0;
     int solver_iterations = 0; ///< GMRES iterations on top of the (possibly lagged) factor
     bool refactorized = false; ///< this step made a new numeric factorisation
+    /// r > 1 only (0 otherwise): the linear solves of the lagged iteration, and the last
+    /// change max_v |X_v^(k) - X_v^(k-1)| relative to the cluster's size.
+    int fixed_point_iterations = 0;
+    double fixed_point_change = 0;
+    /// Steps of the scheme this step was made of: 1, or more when an r > 1 iteration failed
+    /// to converge and the step was halved (FixedPointOptions::max_halvings).
+    int substeps = 1;
+};
+
+/// The lagged fixed-point iteration for r > 1 (numerics.md §5), Anderson-accelerated: stop
+/// when a solve moves the positions by less than tol relative to the cluster's size. A step
+/// whose iteration needs more than max_iterations solves is split into two steps of tau/2, at
+/// most max_halvings times in a row; beyond that it is a ConvergenceError.
+struct FixedPointOptions {
+    double tol = 1e-8;
+    int max_iterations = 60;
+    int max_halvings = 4;
 };
 
 /// Steps one cluster; keep one stepper per cluster (it caches that cluster's patterns).
@@ -53,11 +70,24 @@ class TimeStepper {
     /// projected back onto their walls (off by default: it voids the stability bound).
     /// On any throw the cluster is unchanged.
     /// \throw InvalidInput (tau), GeometryError (degenerate facets before or after the step),
-    ///        SolverError (singular or non-finite system).
+    ///        SolverError (singular or non-finite system), ConvergenceError (r > 1 iteration).
     StepReport step(Cluster& c, Flow flow, double tau, bool project_onto_walls = false);
+    /// \throw InvalidInput unless tol > 0, max_iterations >= 2 and max_halvings in 0..20.
+    void set_fixed_point(FixedPointOptions o);
+    const FixedPointOptions& fixed_point() const { return fixed_point_; }
 
   private:
     struct System;
+    StepReport step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls);
+    StepReport step_halving(Cluster& c, Flow flow, double tau, bool project, int halvings);
+    /// One linear solve of the step's system with the r > 1 weights at `lagged`; returns X^m + dX.
+    std::vector<Vec3> solve_once(Cluster& c, Flow flow, double tau, const FacetNormals* lagged,
+                                 StepReport& report);
+    /// The lagged iteration of §4.2 from the first iterate X (weights at nu^m) to convergence.
+    void iterate_lagged(Cluster& c, Flow flow, double tau, std::vector<Vec3>& X,
+                        StepReport& report);
+    FixedPointOptions fixed_point_;
+    int revision_ = -1; ///< the cluster's assembly_revision() the patterns were built for
     std::unique_ptr<System> mcf_, sd_;
     std::unique_ptr<KappaBasis> Z_;
 };

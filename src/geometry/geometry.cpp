@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace froth {
 
@@ -14,9 +15,10 @@ std::vector<double> surface_areas(const Cluster& c) {
 }
 
 double energy(const Cluster& c) {
-    const std::vector<double> areas = surface_areas(c);
+    // E_gamma = sum_i sum_sigma sigma_i gamma_i(nu_sigma) |sigma|, with gamma 1-homogeneous.
     double e = 0;
-    for (int i = 0; i < c.n_surfaces(); ++i) e += c.surface(i).sigma * areas[i];
+    for (const Surface& s : c.surfaces())
+        for (const Tri& t : s.triangles) e += 0.5 * s.density(area_vector2(c.positions(), t));
     return e;
 }
 
@@ -43,6 +45,27 @@ double max_volume_loss(const Cluster& c, const std::vector<double>& volumes) {
     return loss;
 }
 
+namespace {
+
+/// beta_i(nu_sigma) per facet and the lumped <beta(nu^m) ., .>^h masses of (3.7a)/(3.8a).
+void add_mobilities(const Cluster& c, PairGeometry& g) {
+    g.facet_beta.resize(c.n_surfaces());
+    g.mass_beta.assign(c.n_pairs(), 0.0);
+    for (int i = 0; i < c.n_surfaces(); ++i) {
+        const Surface& s = c.surface(i);
+        const std::string where = "surface " + std::to_string(i + 1);
+        g.facet_beta[i].resize(s.triangles.size());
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const Vec3 a2 = area_vector2(c.positions(), s.triangles[f]);
+            const double beta = s.beta(a2.normalized(), s.sigma, s.gamma.get(), where);
+            g.facet_beta[i][f] = beta;
+            for (int v : s.triangles[f]) g.mass_beta[c.pair_index(v, i)] += beta * a2.norm() / 6;
+        }
+    }
+}
+
+} // namespace
+
 PairGeometry pair_geometry(const Cluster& c) {
     PairGeometry g;
     g.mass.assign(c.n_pairs(), 0.0);
@@ -58,6 +81,7 @@ PairGeometry pair_geometry(const Cluster& c) {
             }
         }
     for (int k = 0; k < c.n_pairs(); ++k) g.omega[k] /= 3.0 * g.mass[k];
+    if (c.has_mobilities()) add_mobilities(c, g);
     return g;
 }
 

@@ -16,7 +16,8 @@ inline Vec3 area_vector2(const std::vector<Vec3>& X, const Tri& t) {
 
 /// |Gamma_i| for every surface i.
 std::vector<double> surface_areas(const Cluster& c);
-/// E = sum_i sigma_i |Gamma_i| (seed (1.5) with tensions).
+/// E = sum_i sigma_i |Gamma_i| (seed (1.5) with tensions); with anisotropies
+/// E_gamma = sum_i sigma_i int gamma_i(nu), the discrete |Gamma^m|_gamma of (3.21).
 double energy(const Cluster& c);
 /// Body volumes by the divergence theorem, exact for closed polyhedra (numerics.md §1); a
 /// body closed by a wall adds its lids (lid_volume: exact on flat walls).
@@ -29,6 +30,10 @@ double max_volume_loss(const Cluster& c, const std::vector<double>& volumes);
 struct PairGeometry {
     std::vector<double> mass;
     std::vector<Vec3> omega;
+    /// Only when some mobility is not 1 (else empty: the isotropic systems use mass):
+    /// beta_i(nu_sigma) per surface and facet, and mb_iv = 1/3 sum beta |sigma| (M_beta, §4).
+    std::vector<std::vector<double>> facet_beta;
+    std::vector<double> mass_beta;
 };
 PairGeometry pair_geometry(const Cluster& c);
 

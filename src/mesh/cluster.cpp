@@ -103,6 +103,34 @@ void Cluster::set_sigma(int surface, double sigma) {
     surfaces_[surface].sigma = sigma;
 }
 
+void Cluster::set_anisotropy(int surface, std::shared_ptr<const Anisotropy> gamma) {
+    if (surface < 0 || surface >= n_surfaces())
+        throw InvalidInput("set_anisotropy: there is no surface " + std::to_string(surface + 1));
+    surfaces_[surface].gamma = std::move(gamma);
+    ++assembly_revision_;
+}
+
+void Cluster::set_mobility(int surface, Mobility beta) {
+    if (surface < 0 || surface >= n_surfaces())
+        throw InvalidInput("set_mobility: there is no surface " + std::to_string(surface + 1));
+    surfaces_[surface].beta = std::move(beta);
+}
+
+bool Cluster::anisotropic() const {
+    return std::any_of(surfaces_.begin(), surfaces_.end(),
+                       [](const Surface& s) { return !s.isotropic(); });
+}
+
+bool Cluster::nonlinear() const {
+    return std::any_of(surfaces_.begin(), surfaces_.end(),
+                       [](const Surface& s) { return s.gamma && s.gamma->r() != 1.0; });
+}
+
+bool Cluster::has_mobilities() const {
+    return std::any_of(surfaces_.begin(), surfaces_.end(),
+                       [](const Surface& s) { return !s.beta.is_unit(); });
+}
+
 int Cluster::pair_index(int v, int s) const {
     for (int k = vs_start_[v]; k < vs_start_[v + 1]; ++k)
         if (vs_list_[k] == s) return k;

@@ -7,9 +7,11 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
 
+#include "anisotropy/mobility.h"
 #include "mesh/walls.h"
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,11 +36,20 @@ struct ClusterSpec {
     std::vector<WallPtr> walls;
 };
 
-/// A surface of the cluster.
+/// A surface of the cluster. Its energy density is sigma gamma(nu) (seed (1.15); gamma null:
+/// the isotropic |nu|, so sigma alone as in (1.14)), its mobility beta (1.19)/(1.20).
 struct Surface {
     std::vector<Tri> triangles;
     double sigma = 1.0;
+    std::shared_ptr<const Anisotropy> gamma; ///< null: isotropic
+    Mobility beta;                           ///< 1 unless set
     std::vector<int> vertices; ///< sorted global ids of the vertices of this surface
+
+    /// True when the surface uses the cotangent (isotropic) stiffness: gamma null or a multiple
+    /// of |.|.
+    bool isotropic() const { return !gamma || gamma->is_isotropic(); }
+    /// sigma gamma(p) (p need not be a unit vector: the density is 1-homogeneous).
+    double density(const Vec3& p) const { return sigma * (gamma ? gamma->gamma(p) : p.norm()); }
 };
 
 /// One (surface, sign) entry of a body: sign = +1 when the surface normal points out of the body.
@@ -106,6 +117,19 @@ class Cluster {
     const Surface& surface(int i) const { return surfaces_[i]; }
     /// \throw InvalidInput unless sigma is finite and positive.
     void set_sigma(int surface, double sigma);
+    /// Sets gamma_i (null: isotropic). \throw InvalidInput for a surface id out of range.
+    void set_anisotropy(int surface, std::shared_ptr<const Anisotropy> gamma);
+    /// Sets beta_i. \throw InvalidInput for a surface id out of range.
+    void set_mobility(int surface, Mobility beta);
+    /// True if some surface is anisotropic.
+    bool anisotropic() const;
+    /// True if some surface has r > 1: its scheme is nonlinear (lagged iteration, §4.2).
+    bool nonlinear() const;
+    /// True if some mobility is not the constant 1.
+    bool has_mobilities() const;
+    /// Changes whenever the sparsity of the position block may change (set_anisotropy): the
+    /// time stepper rebuilds its patterns when it sees a new value.
+    int assembly_revision() const { return assembly_revision_; }
 
     const std::vector<Body>& bodies() const { return bodies_; }
     const std::vector<JunctionEdge>& junction_edges() const { return junction_edges_; }
@@ -165,6 +189,7 @@ class Cluster {
     double initial_area_ = 0;
     int n_facets_ = 0;
     double time_ = 0.0;
+    int assembly_revision_ = 0;
 };
 
 /// Removes from spec the facets with all three corners on one of spec.walls (within 1e-6 of

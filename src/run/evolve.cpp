@@ -135,6 +135,10 @@ class Run {
             return stepper_.step(c_, o_.flow, tau, o_.project_onto_walls);
         } catch (const InvalidInput&) {
             throw;
+        } catch (const ConvergenceError& e) { // not a topology event: say what it was
+            r_.stop_reason = std::string("no convergence: ") + e.what() + " at t = " +
+                             fmt(c_.time());
+            return std::nullopt;
         } catch (const Error& e) {
             r_.event = TopologyEvent{"step failed",
                                      std::string(e.what()) + " at t = " + fmt(c_.time()), c_.time()};

@@ -42,7 +42,8 @@ struct EvolveResult {
     double solve_seconds = 0;        ///< summed over the steps
     int factorizations = 0;          ///< numeric factorisations made (the rest reused one)
     double max_energy_increase = 0;  ///< largest relative energy increase of any step (0 if none)
-    /// "T reached", "steps done", "on_step", "interrupted", or "topology: <what, where, when>"
+    /// "T reached", "steps done", "on_step", "interrupted", "topology: <what, where, when>", or
+    /// "no convergence: <...>" (the r > 1 fixed-point iteration of a step failed)
     std::string stop_reason;
     std::optional<TopologyEvent> event; ///< set when the watch or a failing step stopped the run
 };
