@@ -2,6 +2,7 @@
 // and 0-based in the engine; the conversion happens only in this file.
 #include "bindings/lua_cluster.h"
 
+#include "bindings/lua_anisotropy.h"
 #include "bindings/luax.h"
 #include "bindings/lua_walls.h"
 #include "io/write.h"
@@ -75,6 +76,78 @@ int l_set_sigma(lua_State* L) {
     });
 }
 
+/// The surfaces an argument names: an id, or "all".
+std::vector<int> check_surfaces(lua_State* L, int idx, const Cluster& c) {
+    if (lua_type(L, idx) == LUA_TSTRING && std::string(lua_tostring(L, idx)) == "all") {
+        std::vector<int> all(c.n_surfaces());
+        for (int i = 0; i < c.n_surfaces(); ++i) all[i] = i;
+        return all;
+    }
+    if (!lua_isinteger(L, idx))
+        luaL_error(L, "expected a surface id or \"all\", got %s", luaL_typename(L, idx));
+    return {check_surface(L, idx, c)};
+}
+
+/// c:set_anisotropy(surface or "all", gamma or nil): nil restores the isotropic sigma |nu|.
+int l_set_anisotropy(lua_State* L) {
+    Cluster& c = self(L).cluster;
+    const std::vector<int> ids = check_surfaces(L, 2, c);
+    std::shared_ptr<const Anisotropy> gamma;
+    if (!lua_isnoneornil(L, 3)) gamma = check_anisotropy(L, 3, "set_anisotropy");
+    for (int i : ids) c.set_anisotropy(i, gamma);
+    return 0;
+}
+
+int l_anisotropy(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    const auto& gamma = c.surface(check_surface(L, 2, c)).gamma;
+    if (gamma) push_anisotropy(L, gamma);
+    else lua_pushnil(L);
+    return 1;
+}
+
+/// beta from a number, "gamma" or a function (nx, ny, nz) -> beta.
+Mobility read_mobility(lua_State* L, int idx) {
+    if (lua_type(L, idx) == LUA_TNUMBER) {
+        const double b = lua_tonumber(L, idx);
+        Mobility m;
+        guarded(L, [&] {
+            m = Mobility::constant(b);
+            return 0;
+        });
+        return m;
+    }
+    if (lua_type(L, idx) == LUA_TSTRING && std::string(lua_tostring(L, idx)) == "gamma")
+        return Mobility::energy_density();
+    if (lua_isfunction(L, idx)) {
+        auto f = std::make_shared<LuaFunction>(L, idx, "mobility", "beta");
+        return Mobility::function(
+            [f](const Eigen::Vector3d& nu) { return f->call(nu[0], nu[1], nu[2], 1)[0]; },
+            "function");
+    }
+    luaL_error(L, "set_mobility: beta must be a positive number, \"gamma\" or a function "
+                  "(nx, ny, nz) -> beta, got %s", luaL_typename(L, idx));
+    return {};
+}
+
+/// c:set_mobility(surface or "all", beta).
+int l_set_mobility(lua_State* L) {
+    Cluster& c = self(L).cluster;
+    const std::vector<int> ids = check_surfaces(L, 2, c);
+    const Mobility beta = read_mobility(L, 3);
+    for (int i : ids) c.set_mobility(i, beta);
+    return 0;
+}
+
+/// c:mobility(surface): a number, "gamma" or "function".
+int l_mobility(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    const Mobility& beta = c.surface(check_surface(L, 2, c)).beta;
+    if (beta.kind() == Mobility::Kind::Constant) lua_pushnumber(L, beta.constant_value());
+    else lua_pushstring(L, beta.describe().c_str());
+    return 1;
+}
+
 int l_time(lua_State* L) {
     lua_pushnumber(L, self(L).cluster.time());
     return 1;
@@ -139,14 +212,34 @@ int l_report(lua_State* L) {
     });
 }
 
+/// fixed_point = {tol, max_iterations, max_halvings} (r > 1 only); defaults when absent.
+FixedPointOptions read_fixed_point(lua_State* L, Options& o, const char* what) {
+    FixedPointOptions f;
+    const int t = o.push("fixed_point");
+    const int idx = lua_gettop(L);
+    if (t == LUA_TTABLE) {
+        Options fo(L, idx, what);
+        f.tol = fo.number("tol", f.tol);
+        f.max_iterations = static_cast<int>(fo.integer("max_iterations", f.max_iterations));
+        f.max_halvings = static_cast<int>(fo.integer("max_halvings", f.max_halvings));
+        fo.finish();
+    } else if (t != LUA_TNIL) {
+        o.error("fixed_point", "must be a table {tol, max_iterations, max_halvings}");
+    }
+    lua_settop(L, idx - 1);
+    return f;
+}
+
 int l_step(lua_State* L) {
     ClusterHandle& h = self(L);
     Options o(L, 2, "step");
     const std::string flow = o.string("flow");
     const double tau = o.number("tau");
     const bool project = o.boolean("project", false);
+    const FixedPointOptions fp = read_fixed_point(L, o, "step: fixed_point");
     o.finish();
     return guarded(L, [&] {
+        h.stepper.set_fixed_point(fp);
         const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau, project);
         push_step_report(L, r);
         return 1;
@@ -199,6 +292,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
         o.error("on_step", "must be a function");
     lua_pop(L, 1);
     e.watch = read_watch_options(L, o);
+    e.fixed_point = read_fixed_point(L, o, "evolve: fixed_point");
     return e;
 }
 
@@ -276,6 +370,8 @@ const luaL_Reg methods[] = {
     {"info", l_info},         {"energy", l_energy},
     {"area", l_area},         {"volumes", l_volumes},
     {"sigma", l_sigma},       {"set_sigma", l_set_sigma},
+    {"anisotropy", l_anisotropy}, {"set_anisotropy", l_set_anisotropy},
+    {"mobility", l_mobility}, {"set_mobility", l_set_mobility},
     {"time", l_time},         {"vertex", l_vertex},
     {"triple_lines", l_triple_lines}, {"quadruple_points", l_quadruple_points},
     {"bodies", l_bodies},     {"report", l_report},
@@ -339,6 +435,9 @@ void push_step_report(lua_State* L, const StepReport& r) {
     set_integer(L, "solver_iterations", r.solver_iterations);
     lua_pushboolean(L, r.refactorized);
     lua_setfield(L, -2, "refactorized");
+    set_integer(L, "fixed_point_iterations", r.fixed_point_iterations);
+    set_number(L, "fixed_point_change", r.fixed_point_change);
+    set_integer(L, "substeps", r.substeps);
 }
 
 void register_cluster_type(lua_State* L) { register_type(L, kClusterType, methods, l_gc, l_tostring); }

@@ -96,72 +96,27 @@ int l_cylinder_wall(lua_State* L) {
     });
 }
 
-/// A Lua function kept in the registry for the life of the wall, called on the main thread.
-class LuaFunction {
-  public:
-    LuaFunction(lua_State* L, int idx, std::string wall, const char* what)
-        : wall_(std::move(wall)), what_(what) {
-        lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_MAINTHREAD);
-        L_ = lua_tothread(L, -1);
-        lua_pop(L, 1);
-        lua_pushvalue(L, idx);
-        ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
-    }
-    ~LuaFunction() { luaL_unref(L_, LUA_REGISTRYINDEX, ref_); }
-    LuaFunction(const LuaFunction&) = delete;
-    LuaFunction& operator=(const LuaFunction&) = delete;
-
-    /// Calls f(x, y, z) for n results; throws InvalidInput on a Lua error or a non-number.
-    std::vector<double> call(const Vec3& x, int n) const {
-        const int top = lua_gettop(L_);
-        lua_rawgeti(L_, LUA_REGISTRYINDEX, ref_);
-        for (int d = 0; d < 3; ++d) lua_pushnumber(L_, x[d]);
-        std::string failure;
-        if (lua_pcall(L_, 3, n, 0) != LUA_OK) {
-            const char* msg = lua_tostring(L_, -1);
-            failure = msg ? msg : "(error object is not a string)";
-        }
-        std::vector<double> out(n);
-        for (int k = 0; k < n && failure.empty(); ++k) {
-            if (lua_type(L_, top + 1 + k) != LUA_TNUMBER)
-                failure = std::string("returned ") + luaL_typename(L_, top + 1 + k) +
-                          " where a number was expected";
-            out[k] = lua_tonumber(L_, top + 1 + k);
-        }
-        lua_settop(L_, top);
-        if (!failure.empty())
-            throw InvalidInput("wall '" + wall_ + "': " + what_ + "(" + fmt(x.x()) + ", " +
-                               fmt(x.y()) + ", " + fmt(x.z()) + ") failed: " + failure);
-        return out;
-    }
-
-  private:
-    lua_State* L_;
-    int ref_;
-    std::string wall_;
-    const char* what_;
-};
-
 int l_wall(lua_State* L) {
     Options o(L, 1, "wall");
     const std::string name = o.string("name", "user wall");
     if (o.push("F") != LUA_TFUNCTION) o.error("F", "must be a function (x, y, z) -> F");
-    auto F = std::make_shared<LuaFunction>(L, -1, name, "F");
+    auto F = std::make_shared<LuaFunction>(L, -1, "wall '" + name + "'", "F");
     lua_pop(L, 1);
     std::shared_ptr<LuaFunction> grad;
     const int t = o.push("gradient");
-    if (t == LUA_TFUNCTION) grad = std::make_shared<LuaFunction>(L, -1, name, "gradient");
+    if (t == LUA_TFUNCTION)
+        grad = std::make_shared<LuaFunction>(L, -1, "wall '" + name + "'", "gradient");
     else if (t != LUA_TNIL) o.error("gradient", "must be a function (x, y, z) -> gx, gy, gz");
     lua_pop(L, 1);
     const double step = o.number("fd_step", 1e-6);
     o.finish();
     std::function<Vec3(const Vec3&)> g;
     if (grad) g = [grad](const Vec3& x) {
-        const std::vector<double> v = grad->call(x, 3);
+        const std::vector<double> v = grad->call(x[0], x[1], x[2], 3);
         return Vec3(v[0], v[1], v[2]);
     };
     return guarded(L, [&] {
-        push_wall(L, make_function_wall([F](const Vec3& x) { return F->call(x, 1)[0]; }, g,
+        push_wall(L, make_function_wall([F](const Vec3& x) { return F->call(x[0], x[1], x[2], 1)[0]; }, g,
                                         name, step));
         return 1;
     });

@@ -1,5 +1,8 @@
 #include "bindings/luax.h"
 
+#include "core/errors.h"
+#include "core/format.h"
+
 #include <climits>
 #include <cmath>
 
@@ -130,6 +133,40 @@ void register_type(lua_State* L, const char* type_name, const luaL_Reg* methods,
     lua_pushcfunction(L, tostring);
     lua_setfield(L, -2, "__tostring");
     lua_pop(L, 1);
+}
+
+LuaFunction::LuaFunction(lua_State* L, int idx, std::string owner, std::string what)
+    : owner_(std::move(owner)), what_(std::move(what)) {
+    lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_MAINTHREAD);
+    L_ = lua_tothread(L, -1);
+    lua_pop(L, 1);
+    lua_pushvalue(L, idx);
+    ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+}
+
+LuaFunction::~LuaFunction() { luaL_unref(L_, LUA_REGISTRYINDEX, ref_); }
+
+std::vector<double> LuaFunction::call(double x, double y, double z, int n) const {
+    const int top = lua_gettop(L_);
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, ref_);
+    lua_pushnumber(L_, x), lua_pushnumber(L_, y), lua_pushnumber(L_, z);
+    std::string failure;
+    if (lua_pcall(L_, 3, n, 0) != LUA_OK) {
+        const char* msg = lua_tostring(L_, -1);
+        failure = msg ? msg : "(error object is not a string)";
+    }
+    std::vector<double> out(n);
+    for (int k = 0; k < n && failure.empty(); ++k) {
+        if (lua_type(L_, top + 1 + k) != LUA_TNUMBER)
+            failure = std::string("returned ") + luaL_typename(L_, top + 1 + k) +
+                      " where a number was expected";
+        out[k] = lua_tonumber(L_, top + 1 + k);
+    }
+    lua_settop(L_, top);
+    if (!failure.empty())
+        throw InvalidInput(owner_ + ": " + what_ + "(" + fmt(x) + ", " + fmt(y) + ", " + fmt(z) +
+                           ") failed: " + failure);
+    return out;
 }
 
 } // namespace froth::lua

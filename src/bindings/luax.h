@@ -11,6 +11,7 @@
 #include <new>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace froth::lua {
 
@@ -95,6 +96,24 @@ template <class Range> void push_integers(lua_State* L, const Range& values, lon
         lua_rawseti(L, -2, ++i);
     }
 }
+
+/// A Lua function kept in the registry for the life of an engine object (a user wall, a
+/// mobility), called back from the engine on the main thread, protected: its errors become
+/// InvalidInput naming the owner ("wall 'w': F(1, 2, 3) failed: ...").
+class LuaFunction {
+  public:
+    LuaFunction(lua_State* L, int idx, std::string owner, std::string what);
+    ~LuaFunction();
+    LuaFunction(const LuaFunction&) = delete;
+    LuaFunction& operator=(const LuaFunction&) = delete;
+    /// Calls f(x, y, z) for n number results. \throw InvalidInput on a Lua error or a non-number.
+    std::vector<double> call(double x, double y, double z, int n) const;
+
+  private:
+    lua_State* L_;
+    int ref_;
+    std::string owner_, what_;
+};
 
 /// Creates the metatable `type_name` once per state: __index = the methods, __gc, __tostring.
 void register_type(lua_State* L, const char* type_name, const luaL_Reg* methods,

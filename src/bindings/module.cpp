@@ -1,5 +1,6 @@
 #include "bindings/froth_lua.h"
 
+#include "bindings/lua_anisotropy.h"
 #include "bindings/lua_builders.h"
 #include "bindings/lua_cluster.h"
 #include "bindings/lua_walls.h"
@@ -34,10 +35,12 @@ void add_lua_path(lua_State* L) {
 void open_froth(lua_State* L) {
     register_cluster_type(L);
     register_wall_type(L);
+    register_anisotropy_type(L);
     add_lua_path(L);
     lua_newtable(L);
     add_builders(L);
     add_wall_constructors(L);
+    add_anisotropy_constructors(L);
     lua_pushstring(L, FROTH_VERSION);
     lua_setfield(L, -2, "version");
     lua_pushvalue(L, -1);

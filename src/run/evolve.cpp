@@ -204,6 +204,7 @@ class Run {
 
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     check_options(o);
+    stepper.set_fixed_point(o.fixed_point); // throws InvalidInput for bad values
     const EngineLoopScope polling; // Ctrl-C is served between steps, also inside on_step
     const auto start = Clock::now();
     Run run(c, stepper, o);

@@ -33,6 +33,8 @@ struct EvolveOptions {
     bool project_onto_walls = false;
     /// What counts as the approach of a topology change (run/topology_watch.h).
     WatchOptions watch;
+    /// The r > 1 iteration of every step (flows/stepper.h).
+    FixedPointOptions fixed_point;
 };
 
 struct EvolveResult {
