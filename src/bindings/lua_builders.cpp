@@ -494,7 +494,6 @@ const luaL_Reg functions[] = {
     {nullptr, nullptr},
 };
 
-#ifdef FROTH_HAVE_GMSH
 // The named clusters (froth.torus_bubble, ..., froth.cube_on_plane, ...) are Lua,
 // lua/froth/clusters.lua and lua/froth/wall_clusters.lua, on top of froth.fragment; they are
 // copied into the froth table so that no script has to require them. A missing module is an
@@ -516,12 +515,12 @@ void add_named_clusters(lua_State* L, int froth, const char* module) {
     }
     lua_pop(L, 1);
 }
-#endif
 
 } // namespace
 
 void add_builders(lua_State* L) {
     luaL_setfuncs(L, functions, 0);
+    add_named_clusters(L, lua_gettop(L), "froth.structured_clusters"); // no gmsh needed
 #ifdef FROTH_HAVE_GMSH
     for (const char* module : {"froth.clusters", "froth.wall_clusters"})
         add_named_clusters(L, lua_gettop(L), module);

@@ -8,6 +8,7 @@
 #include "io/write.h"
 #include "run/evolve.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <unistd.h>
@@ -146,6 +147,30 @@ int l_mobility(lua_State* L) {
     if (beta.kind() == Mobility::Kind::Constant) lua_pushnumber(L, beta.constant_value());
     else lua_pushstring(L, beta.describe().c_str());
     return 1;
+}
+
+/// c:ellipsoid_distance{a, b, c}: max over vertices of the distance to the ellipsoid with these
+/// semi-axes (the Table 1 error of the seed), and the mean as a second result.
+int l_ellipsoid_distance(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    luaL_checktype(L, 2, LUA_TTABLE);
+    Vec3 axes;
+    for (int d = 0; d < 3; ++d) {
+        if (lua_rawgeti(L, 2, d + 1) != LUA_TNUMBER)
+            luaL_error(L, "ellipsoid_distance: expected the semi-axes {a, b, c}");
+        axes[d] = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+    }
+    return guarded(L, [&] {
+        double max = 0, sum = 0;
+        for (const Vec3& x : c.positions()) {
+            const double d = distance_to_ellipsoid(x, axes);
+            max = std::max(max, d), sum += d;
+        }
+        lua_pushnumber(L, max);
+        lua_pushnumber(L, sum / c.n_vertices());
+        return 2;
+    });
 }
 
 int l_time(lua_State* L) {
@@ -372,6 +397,7 @@ const luaL_Reg methods[] = {
     {"sigma", l_sigma},       {"set_sigma", l_set_sigma},
     {"anisotropy", l_anisotropy}, {"set_anisotropy", l_set_anisotropy},
     {"mobility", l_mobility}, {"set_mobility", l_set_mobility},
+    {"ellipsoid_distance", l_ellipsoid_distance},
     {"time", l_time},         {"vertex", l_vertex},
     {"triple_lines", l_triple_lines}, {"quadruple_points", l_quadruple_points},
     {"bodies", l_bodies},     {"report", l_report},

@@ -75,6 +75,13 @@ struct MeshQuality {
 };
 MeshQuality mesh_quality(const Cluster& c);
 
+/// Euclidean distance from x to the ellipsoid surface sum_i (y_i / a_i)^2 = 1 (axis-aligned,
+/// centered at 0): the closest point is y_i = a_i^2 x_i / (a_i^2 + t) with t the root of
+/// sum_i (a_i x_i / (a_i^2 + t))^2 = 1, found by Newton from the right (the function is convex
+/// and decreasing there, so the iteration is monotone). The error measure of the seed's Table 1
+/// (distance to the exact solution (5.5), "computed by a Newton method").
+double distance_to_ellipsoid(const Vec3& x, const Vec3& axes);
+
 /// Sum of principal curvatures per vertex (positive on a sphere with outward normals), from
 /// the discrete Laplacian of the surface with the lowest id at that vertex. For output only.
 std::vector<double> vertex_mean_curvature(const Cluster& c);

@@ -265,3 +265,27 @@ TEST(AnisotropicSteps, ClosedWulffShapeShrinksSelfSimilarlyWithBetaGamma) {
 
 } // namespace
 } // namespace froth
+
+namespace froth {
+namespace {
+
+TEST(EllipsoidDistance, PointsAlongTheNormalAreAtTheirOffset) {
+    // y on the ellipsoid, n its unit normal (grad of sum (y_i/a_i)^2): y + s n is at distance
+    // |s| for |s| below the smallest radius of curvature.
+    const Vec3 a(1.0, 0.5, 0.1);
+    std::mt19937 rng(5);
+    std::normal_distribution<double> g;
+    for (int k = 0; k < 200; ++k) {
+        Vec3 u(g(rng), g(rng), g(rng));
+        u.normalize();
+        const Vec3 y = a.cwiseProduct(u);
+        const Vec3 n = u.cwiseQuotient(a).normalized();
+        for (double s : {-0.005, 0.0, 0.01, 0.3})
+            EXPECT_NEAR(distance_to_ellipsoid(y + s * n, a), std::abs(s), 1e-12)
+                << "u = " << u.transpose() << " s = " << s;
+    }
+    EXPECT_THROW(distance_to_ellipsoid(Vec3(1, 0, 0), Vec3(1, 0, 1)), InvalidInput);
+}
+
+} // namespace
+} // namespace froth
