@@ -50,6 +50,7 @@ local function run(eps, k)
           seconds = os.clock() - t0, energy_up = energy_up}
 end
 
+local rows = {} -- returned for tests/regression/table1_wulff_mcf.lua: rows[eps][K] = run(...)
 local eps_list = opts.eps > 0 and {opts.eps} or {0.5, 0.1}
 local kmin, kmax = opts.kmin, opts.kmax
 if opts.smoke then kmin, kmax = 3, 3 end
@@ -59,6 +60,8 @@ for _, eps in ipairs(eps_list) do
   local prev
   for k = kmin, kmax do
     local r = run(eps, k)
+    rows[eps] = rows[eps] or {}
+    rows[eps][r.K] = r
     local s = seed[eps] and seed[eps][r.K]
     local seed_text = s and ("%7.4f  %.4e  %.4e | %5.2f  %5.2f"):format(s[1], s[2], s[3], r.half / s[2], r.last / s[3])
                       or "      (not in the seed's table)"
@@ -72,3 +75,5 @@ for _, eps in ipairs(eps_list) do
     prev = r
   end
 end
+
+return {rows = rows, seed = seed}
