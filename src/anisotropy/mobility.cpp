@@ -9,7 +9,8 @@ namespace froth {
 
 Mobility Mobility::constant(double value) {
     if (!(std::isfinite(value) && value > 0))
-        throw InvalidInput("mobility: beta must be a finite number > 0 (got " + fmt(value) + ")");
+        throw InvalidInput("set_mobility: beta must be a finite number > 0 (got " + fmt(value) +
+                           ")");
     Mobility m;
     m.value_ = value;
     return m;
@@ -43,7 +44,13 @@ double Mobility::operator()(const Eigen::Vector3d& nu, double sigma, const Aniso
                             const std::string& where) const {
     double b = value_;
     if (kind_ == Kind::EnergyDensity) b = sigma * (gamma ? gamma->gamma(nu) : nu.norm());
-    if (kind_ == Kind::Function) b = fn_(nu);
+    if (kind_ == Kind::Function) {
+        try {
+            b = fn_(nu);
+        } catch (const InvalidInput& e) { // name the surface too
+            throw InvalidInput(where + ": " + e.what());
+        }
+    }
     if (!(std::isfinite(b) && b > 0))
         throw InvalidInput(where + ": the mobility " + describe() + " is " + fmt(b) +
                            " at the normal (" + fmt(nu[0]) + ", " + fmt(nu[1]) + ", " +

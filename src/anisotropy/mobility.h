@@ -35,7 +35,7 @@ class Mobility {
 
     /// beta at the unit normal nu of a surface whose density is sigma gamma (gamma null:
     /// isotropic). \throw InvalidInput naming `where` when the value is not finite and positive
-    /// (a user function's own errors pass through).
+    /// or a user function fails (its message prefixed by `where`).
     double operator()(const Eigen::Vector3d& nu, double sigma, const Anisotropy* gamma,
                       const std::string& where) const;
 

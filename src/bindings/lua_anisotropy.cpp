@@ -87,7 +87,9 @@ Term read_term(lua_State* L, int idx, int l) {
     } else {
         term.from_angles = true;
         term.eps = o.number("eps");
-        if (o.push("theta") != LUA_TNIL) term.theta = read_vector(L, lua_gettop(L));
+        const int t = o.push("theta");
+        if (t == LUA_TTABLE) term.theta = read_vector(L, lua_gettop(L));
+        else if (t != LUA_TNIL) o.error("theta", "must be a table {t1, t2, t3} of angles");
         lua_pop(L, 1);
     }
     o.finish();
@@ -115,8 +117,10 @@ int l_anisotropy(lua_State* L) {
         const std::string key = luaL_tolstring(L, -1, nullptr);
         luaL_error(L, "anisotropy: unknown option '%s' (terms and r only)", key.c_str());
     }
-    lua_getfield(L, 1, "r");
-    const double r = lua_isnil(L, -1) ? 1.0 : luaL_checknumber(L, -1);
+    const int rt = lua_getfield(L, 1, "r");
+    if (rt != LUA_TNIL && rt != LUA_TNUMBER)
+        luaL_error(L, "anisotropy: r must be a number >= 1, got %s", luaL_typename(L, -1));
+    const double r = rt == LUA_TNIL ? 1.0 : lua_tonumber(L, -1);
     lua_pop(L, 1);
     return guarded(L, [&] {
         std::vector<Matrix3d> G;

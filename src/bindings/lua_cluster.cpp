@@ -78,21 +78,21 @@ int l_set_sigma(lua_State* L) {
 }
 
 /// The surfaces an argument names: an id, or "all".
-std::vector<int> check_surfaces(lua_State* L, int idx, const Cluster& c) {
+std::vector<int> check_surfaces(lua_State* L, int idx, const Cluster& c, const char* op) {
     if (lua_type(L, idx) == LUA_TSTRING && std::string(lua_tostring(L, idx)) == "all") {
         std::vector<int> all(c.n_surfaces());
         for (int i = 0; i < c.n_surfaces(); ++i) all[i] = i;
         return all;
     }
     if (!lua_isinteger(L, idx))
-        luaL_error(L, "expected a surface id or \"all\", got %s", luaL_typename(L, idx));
+        luaL_error(L, "%s: expected a surface id or \"all\", got %s", op, luaL_typename(L, idx));
     return {check_surface(L, idx, c)};
 }
 
 /// c:set_anisotropy(surface or "all", gamma or nil): nil restores the isotropic sigma |nu|.
 int l_set_anisotropy(lua_State* L) {
     Cluster& c = self(L).cluster;
-    const std::vector<int> ids = check_surfaces(L, 2, c);
+    const std::vector<int> ids = check_surfaces(L, 2, c, "set_anisotropy");
     std::shared_ptr<const Anisotropy> gamma;
     if (!lua_isnoneornil(L, 3)) gamma = check_anisotropy(L, 3, "set_anisotropy");
     for (int i : ids) c.set_anisotropy(i, gamma);
@@ -113,7 +113,7 @@ Mobility read_mobility(lua_State* L, int idx) {
         const double b = lua_tonumber(L, idx);
         Mobility m;
         guarded(L, [&] {
-            m = Mobility::constant(b);
+            m = Mobility::constant(b); // "mobility: ..." becomes "set_mobility: ..."
             return 0;
         });
         return m;
@@ -134,7 +134,7 @@ Mobility read_mobility(lua_State* L, int idx) {
 /// c:set_mobility(surface or "all", beta).
 int l_set_mobility(lua_State* L) {
     Cluster& c = self(L).cluster;
-    const std::vector<int> ids = check_surfaces(L, 2, c);
+    const std::vector<int> ids = check_surfaces(L, 2, c, "set_mobility");
     const Mobility beta = read_mobility(L, 3);
     for (int i : ids) c.set_mobility(i, beta);
     return 0;
