@@ -4,6 +4,7 @@
 #include "bindings/lua_builders.h"
 #include "bindings/lua_cluster.h"
 #include "bindings/lua_walls.h"
+#include "bindings/lua_wulff.h"
 
 #include <lua.hpp>
 
@@ -40,6 +41,7 @@ void open_froth(lua_State* L) {
     lua_newtable(L);
     add_builders(L);
     add_wall_constructors(L);
+    add_wulff_functions(L);
     add_anisotropy_constructors(L);
     lua_pushstring(L, FROTH_VERSION);
     lua_setfield(L, -2, "version");
