@@ -59,22 +59,23 @@ Matrix3d R3(double t) {
 
 // Fibonacci points on the unit sphere: the starting guesses of gamma_star.
 const std::vector<Vector3d>& sphere_samples() {
-    static const std::vector<Vector3d> pts = [] {
-        const int n = 400;
-        std::vector<Vector3d> v;
-        v.reserve(n);
-        const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-        for (int i = 0; i < n; ++i) {
-            const double z = 1.0 - (2.0 * i + 1.0) / n;
-            const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
-            v.emplace_back(rho * std::cos(golden * i), rho * std::sin(golden * i), z);
-        }
-        return v;
-    }();
+    static const std::vector<Vector3d> pts = fibonacci_sphere(400);
     return pts;
 }
 
 } // namespace
+
+std::vector<Vector3d> fibonacci_sphere(int n) {
+    std::vector<Vector3d> v;
+    v.reserve(n);
+    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < n; ++i) {
+        const double z = 1.0 - (2.0 * i + 1.0) / n;
+        const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
+        v.emplace_back(rho * std::cos(golden * i), rho * std::sin(golden * i), z);
+    }
+    return v;
+}
 
 Anisotropy::Anisotropy(std::vector<Matrix3d> G, double r) : G_(std::move(G)), r_(r) {
     if (G_.empty()) throw InvalidInput("anisotropy: needs at least one term (L = 0)");

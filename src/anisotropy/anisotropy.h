@@ -81,6 +81,10 @@ class Anisotropy {
     void terms(const Eigen::Vector3d& p, std::vector<double>& g, double& gmax) const;
 };
 
+/// n points of the Fibonacci spiral, nearly uniform on the unit sphere (n >= 1): the starting
+/// guesses of gamma_star and the direction sets of the Wulff shapes (wulff/).
+std::vector<Eigen::Vector3d> fibonacci_sphere(int n);
+
 using ElementMatrix = Eigen::Matrix<double, 9, 9>;
 
 /// Discrete energy of one triangle (x0, x1, x2), E = gamma(nu) |sigma| with nu |sigma| =

@@ -82,18 +82,6 @@ TriangleSurface icosphere(int subdivisions) {
     return m;
 }
 
-std::vector<Vec3> fibonacci_directions(int n) {
-    std::vector<Vec3> v;
-    v.reserve(n);
-    const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-    for (int i = 0; i < n; ++i) {
-        const double z = 1.0 - (2.0 * i + 1.0) / n;
-        const double rho = std::sqrt(std::max(0.0, 1.0 - z * z));
-        v.emplace_back(rho * std::cos(golden * i), rho * std::sin(golden * i), z);
-    }
-    return v;
-}
-
 std::vector<Vec3> facet_directions(const Anisotropy& gamma) {
     const std::vector<Vec3> a = needle_axes(gamma);
     const int n = static_cast<int>(a.size());

@@ -25,9 +25,6 @@ TriangleSurface icosphere(int subdivisions);
 /// The largest subdivision level accepted (163842 vertices).
 inline constexpr int kMaxSubdivisions = 7;
 
-/// n points of the Fibonacci spiral, nearly uniform on the unit sphere (n >= 1).
-std::vector<Vec3> fibonacci_directions(int n);
-
 /// Directions at which the Wulff shape of a nearly crystalline gamma has (almost flat) facets.
 /// A term of (1.15) is needle-like when the largest eigenvalue of G_l is at least 25 times the
 /// middle one (for (1.17), G_l = eps^2 I + (1 - eps^2) a_l a_l^T, eps <= 0.2); let a_l be its

@@ -54,7 +54,7 @@ void check_options(const WulffOptions& o) {
 /// already there (a near twin, closer than 1e-6, would only add an ill-conditioned vertex).
 std::vector<Vec3> plane_directions(const Anisotropy& gamma, const WulffOptions& o) {
     std::vector<Vec3> p =
-        o.directions ? fibonacci_directions(*o.directions) : icosphere(o.subdivisions).vertices;
+        o.directions ? fibonacci_sphere(*o.directions) : icosphere(o.subdivisions).vertices;
     if (!o.facet_directions) return p;
     const std::size_t n_sphere = p.size();
     for (const Vec3& f : facet_directions(gamma)) {
@@ -102,7 +102,7 @@ std::vector<Vec3> probe_directions(int n) {
         (Eigen::AngleAxisd(0.3, Vec3::UnitZ()) * Eigen::AngleAxisd(0.7, Vec3::UnitY()) *
          Eigen::AngleAxisd(1.1, Vec3::UnitX()))
             .toRotationMatrix();
-    std::vector<Vec3> p = fibonacci_directions(n);
+    std::vector<Vec3> p = fibonacci_sphere(n);
     for (Vec3& x : p)
         x = R * x;
     return p;

@@ -5,6 +5,8 @@
 #include "assembly/flow_systems.h"
 #include "core/errors.h"
 
+#include "expect_error.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,16 +67,7 @@ Tri random_triangle(std::mt19937& rng) {
     }
 }
 
-void expect_invalid(const std::function<void()>& f, const std::vector<std::string>& parts) {
-    try {
-        f();
-        ADD_FAILURE() << "no InvalidInput thrown";
-    } catch (const InvalidInput& e) {
-        const std::string msg = e.what();
-        for (const std::string& s : parts)
-            EXPECT_NE(msg.find(s), std::string::npos) << "'" << msg << "' lacks '" << s << "'";
-    }
-}
+using test::expect_invalid;
 
 // --- presets ---------------------------------------------------------------------------------
 

@@ -8,6 +8,8 @@
 #include "geometry/geometry.h"
 #include "wulff/sphere_sampling.h"
 
+#include "expect_error.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -66,16 +68,7 @@ WulffOptions level(int k, bool facets = true) {
     return o;
 }
 
-void expect_invalid(const std::function<void()>& f, const std::vector<std::string>& parts) {
-    try {
-        f();
-        ADD_FAILURE() << "no InvalidInput thrown";
-    } catch (const InvalidInput& e) {
-        const std::string msg = e.what();
-        for (const std::string& s : parts)
-            EXPECT_NE(msg.find(s), std::string::npos) << "'" << msg << "' lacks '" << s << "'";
-    }
-}
+using test::expect_invalid;
 
 // --- sphere samplings ------------------------------------------------------------------------
 
