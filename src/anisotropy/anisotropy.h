@@ -7,7 +7,6 @@
 ///   gamma'(p)  = gamma^(1-r) sum_l gamma_l^(r-1) G_l p / gamma_l                         (1.15)
 ///   gamma*(q)  = sup_{p != 0} (q . p) / gamma(p)                                          (1.16)
 ///
-/// Engine core only: not yet used by the assembly or the time stepper.
 
 #include <Eigen/Dense>
 
@@ -64,6 +63,10 @@ class Anisotropy {
     Eigen::Matrix3d gamma_hessian(const Eigen::Vector3d& p) const;
     /// The lagged weights [gamma_l(nu)/gamma(nu)]^(r-1) of (1.24a) (all 1 for r = 1).
     std::vector<double> term_weights(const Eigen::Vector3d& nu) const;
+    /// The gradients of term_weights at a non-zero p (not necessarily unit; homogeneous of
+    /// degree -1): dw_l/dp = (r - 1) w_l (G_l p / gamma_l^2 - gamma'(p) / gamma(p)); all zero
+    /// for r = 1. Newton's method for (3.9) needs them (numerics.md "Anisotropic schemes").
+    std::vector<Eigen::Vector3d> term_weight_gradients(const Eigen::Vector3d& p) const;
 
     /// gamma*(q) of (1.16). Computed as 1 / min { gamma(p) : q . p = 1 } (the sup is attained
     /// with q . p > 0 and is scale invariant), a smooth convex problem on a plane, solved by
@@ -101,6 +104,13 @@ double element_energy(const Anisotropy& gamma, const std::array<Eigen::Vector3d,
 /// Throws GeometryError for a degenerate triangle.
 ElementMatrix element_matrix(const Anisotropy& gamma, const std::array<Eigen::Vector3d, 3>& x,
                              const Eigen::Vector3d& nu_star);
+/// The derivative of the weights for Newton's method on (3.9): with M(y) =
+/// element_matrix(gamma, x, nu(y)) (x the triangle on Gamma^m, y the same triangle at a new
+/// iterate, nu(y) its normal), d/dy [M(y) y] = M(y) + weight_jacobian(gamma, x, y), and
+/// weight_jacobian = sum_l (M_l y) (dw_l/dy)^T with M_l the unweighted term matrices. Not
+/// symmetric; zero for r = 1. Throws GeometryError for a degenerate x or y.
+ElementMatrix weight_jacobian(const Anisotropy& gamma, const std::array<Eigen::Vector3d, 3>& x,
+                              const std::array<Eigen::Vector3d, 3>& y);
 /// r = 1 form (weights 1); throws InvalidInput for r != 1 (use the lagged form).
 ElementMatrix element_matrix(const Anisotropy& gamma, const std::array<Eigen::Vector3d, 3>& x);
 

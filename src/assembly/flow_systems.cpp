@@ -98,6 +98,25 @@ Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
     return y;
 }
 
+void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const std::vector<Vec3>& X,
+                              int size, SparseBuilder& M) {
+    M.begin(size, size);
+    const auto& Xm = c.positions();
+    for (int i = 0; i < c.n_surfaces(); ++i) {
+        const Surface& s = c.surface(i);
+        if (s.isotropic() || s.gamma->r() == 1.0) continue;
+        for (const Tri& t : s.triangles) {
+            const ElementMatrix C =
+                s.sigma * weight_jacobian(*s.gamma, {Xm[t[0]], Xm[t[1]], Xm[t[2]]},
+                                          {X[t[0]], X[t[1]], X[t[2]]});
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b)
+                    P.add_block(M, t[a], t[b], C.block<3, 3>(3 * a, 3 * b));
+        }
+    }
+    M.finish();
+}
+
 void assemble_mcf(const Cluster& c, const PairGeometry& g, const PositionBasis& P, double tau,
                   const FacetNormals* lagged, SparseBuilder& M, Eigen::VectorXd& rhs) {
     const int n = P.size();

@@ -29,7 +29,7 @@ namespace froth {
 Eigen::Matrix3d local_stiffness(const Vec3& x0, const Vec3& x1, const Vec3& x2);
 
 /// The normals nu^{m+1} at which (3.9) weighs the terms of an r > 1 anisotropy, per surface and
-/// facet (the previous iterate of the lagged iteration, numerics.md §5). Surfaces with r = 1
+/// facet (the current iterate of the r > 1 iteration, numerics.md §5). Surfaces with r = 1
 /// ignore them; null (or an empty entry) means each facet's own normal on X^m.
 using FacetNormals = std::vector<std::vector<Vec3>>;
 
@@ -40,6 +40,13 @@ FacetNormals facet_normals(const Cluster& c, const std::vector<Vec3>& X);
 /// r = 1 (and isotropic surfaces) A_gamma X^m = grad E_gamma(X^m) (1.24b).
 Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
                                 const FacetNormals* lagged = nullptr);
+
+/// The Newton correction of the position block for r > 1 (numerics.md "Anisotropic schemes"):
+/// the derivative of the (3.9) weights w(nu(X)) in A_gamma(w(nu(X))) X, T^T C T with
+/// C = sum over the facets of r > 1 surfaces of sigma_i weight_jacobian (anisotropy.h), in a
+/// size x size matrix (the position unknowns first, as in the flow systems).
+void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const std::vector<Vec3>& X,
+                              int size, SparseBuilder& M);
 
 /// The systems in the reduced position unknowns y of P (dX_v = T_v y_v, (3.10)/(3.11)); with
 /// no walls P is the identity and these are (3.7)/(3.8) ((3.5)/(3.6) when isotropic).

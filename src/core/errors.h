@@ -27,7 +27,7 @@ struct GeometryError : Error {
 struct SolverError : Error {
     using Error::Error;
 };
-/// An iteration did not converge (the lagged fixed-point iteration of an r > 1 anisotropy).
+/// An iteration did not converge (the nonlinear iteration of an r > 1 anisotropy).
 struct ConvergenceError : SolverError {
     using SolverError::SolverError;
 };

@@ -76,6 +76,9 @@ struct TimeStepper::System {
     SparseBuilder matrix;
     Eigen::VectorXd rhs;
     SparseDirectSolver solver;
+    // r > 1: the weight derivative of Newton's method and the (unsymmetric) Jacobian's solver.
+    SparseBuilder weight_jacobian;
+    SparseDirectSolver newton{Factorization::LU};
 };
 
 TimeStepper::TimeStepper() = default;
@@ -93,15 +96,15 @@ void TimeStepper::set_fixed_point(FixedPointOptions o) {
     fixed_point_ = o;
 }
 
-std::vector<Vec3> TimeStepper::solve_once(Cluster& c, Flow flow, double tau,
-                                          const FacetNormals* lagged, StepReport& report) {
+TimeStepper::System& TimeStepper::assemble(Cluster& c, Flow flow, double tau,
+                                            const PositionBasis& P, const FacetNormals* lagged,
+                                            StepReport& report) {
     const auto t0 = Clock::now();
     if (revision_ != c.assembly_revision()) { // isotropic <-> anisotropic changes the pattern
         mcf_.reset(), sd_.reset();
         revision_ = c.assembly_revision();
     }
     const PairGeometry g = pair_geometry(c);
-    const PositionBasis P(c);
     std::unique_ptr<System>& sys = flow == Flow::MeanCurvature ? mcf_ : sd_;
     if (!sys)
         sys = std::make_unique<System>(flow == Flow::MeanCurvature ? Factorization::Cholesky
@@ -112,12 +115,17 @@ std::vector<Vec3> TimeStepper::solve_once(Cluster& c, Flow flow, double tau,
         if (!Z_) Z_ = std::make_unique<KappaBasis>(kappa_basis(c));
         assemble_sd(c, g, *Z_, P, tau, lagged, sys->matrix, sys->rhs);
     }
-    const SparseMatrix& M = sys->matrix.finish();
     report.assemble_seconds += seconds_since(t0);
+    return *sys;
+}
 
+namespace {
+
+Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
+                              const Eigen::VectorXd& b, double tau, StepReport& report) {
     const auto t1 = Clock::now();
     SolveStats stats;
-    const Eigen::VectorXd x = sys->solver.solve(M, sys->rhs, &stats);
+    Eigen::VectorXd x = solver.solve(M, b, &stats);
     report.solver_iterations += stats.iterations;
     report.refactorized = report.refactorized || stats.refactorized;
     report.solve_seconds += seconds_since(t1);
@@ -125,9 +133,23 @@ std::vector<Vec3> TimeStepper::solve_once(Cluster& c, Flow flow, double tau,
     if (!x.allFinite())
         throw SolverError("step: the linear solve produced non-finite values (tau = " +
                           fmt(tau) + ")");
+    return x;
+}
+
+/// X^m + T z: the positions of a solution z of the step's system.
+std::vector<Vec3> displaced(const Cluster& c, const PositionBasis& P, const Eigen::VectorXd& z) {
     std::vector<Vec3> X = c.positions();
-    for (int v = 0; v < c.n_vertices(); ++v) X[v] += P.displacement(x, v);
+    for (int v = 0; v < c.n_vertices(); ++v) X[v] += P.displacement(z, v);
     return X;
+}
+
+} // namespace
+
+Eigen::VectorXd TimeStepper::solve_once(Cluster& c, Flow flow, double tau,
+                                        const PositionBasis& P, const FacetNormals* lagged,
+                                        StepReport& report) {
+    System& sys = assemble(c, flow, tau, P, lagged, report);
+    return solve_checked(sys.solver, sys.matrix.finish(), sys.rhs, tau, report);
 }
 
 namespace {
@@ -198,8 +220,10 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
     report.tau = tau;
     report.energy_before = energy(c);
 
-    std::vector<Vec3> X = solve_once(c, flow, tau, nullptr, report);
-    if (c.nonlinear()) iterate_lagged(c, flow, tau, X, report);
+    const PositionBasis P(c);
+    Eigen::VectorXd z = solve_once(c, flow, tau, P, nullptr, report);
+    if (c.nonlinear()) iterate_newton(c, flow, tau, P, z, report);
+    std::vector<Vec3> X = displaced(c, P, z);
     if (project_onto_walls) project_vertices(c, X);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
         throw GeometryError("step: with tau = " + fmt(tau) + " the step would collapse " +
@@ -220,82 +244,58 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
     return report;
 }
 
-namespace {
-
-Eigen::VectorXd flatten(const std::vector<Vec3>& X) {
-    Eigen::VectorXd x(3 * X.size());
-    for (std::size_t v = 0; v < X.size(); ++v) x.segment<3>(3 * v) = X[v];
-    return x;
-}
-
-std::vector<Vec3> unflatten(const Eigen::VectorXd& x) {
-    std::vector<Vec3> X(x.size() / 3);
-    for (std::size_t v = 0; v < X.size(); ++v) X[v] = x.segment<3>(3 * v);
-    return X;
-}
-
-/// Anderson acceleration (type II, depth m) of a fixed-point map G: from the residuals
-/// f_k = G(x_k) - x_k of the last m + 1 iterates, x_{k+1} = G(x_k) - dG gamma with gamma the
-/// least-squares minimiser of |f_k - dF gamma|. Plain Picard (x_{k+1} = G(x_k)) on the lagged
-/// weights of (3.9) contracts slowly or cycles for large r; this needs a handful of solves.
-class Anderson {
-  public:
-    explicit Anderson(int depth) : depth_(depth) {}
-    Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& gx) {
-        const Eigen::VectorXd f = gx - x;
-        if (has_last_) {
-            dF_.push_back(f - f_last_), dG_.push_back(gx - g_last_);
-            if (static_cast<int>(dF_.size()) > depth_) dF_.erase(dF_.begin()), dG_.erase(dG_.begin());
-        }
-        f_last_ = f, g_last_ = gx, has_last_ = true;
-        if (dF_.empty()) return gx;
-        Eigen::MatrixXd F(f.size(), dF_.size()), Gm(f.size(), dG_.size());
-        for (std::size_t j = 0; j < dF_.size(); ++j) F.col(j) = dF_[j], Gm.col(j) = dG_[j];
-        const Eigen::VectorXd gamma = F.colPivHouseholderQr().solve(f);
-        if (!gamma.allFinite()) return gx;
-        return gx - Gm * gamma;
-    }
-
-  private:
-    int depth_;
-    bool has_last_ = false;
-    Eigen::VectorXd f_last_, g_last_;
-    std::vector<Eigen::VectorXd> dF_, dG_;
-};
-
-} // namespace
-
-void TimeStepper::iterate_lagged(Cluster& c, Flow flow, double tau, std::vector<Vec3>& X,
-                                 StepReport& report) {
-    // (3.9) weighs term l by [gamma_l(nu^{m+1}) / gamma(nu^{m+1})]^(r-1): X^{m+1} is a fixed
-    // point of "solve with the weights at the normals of X". The first solve (weights at nu^m)
-    // gave X; iterate, accelerated, until a solve no longer moves the positions.
+void TimeStepper::iterate_newton(Cluster& c, Flow flow, double tau, const PositionBasis& P,
+                                 Eigen::VectorXd& z, StepReport& report) {
+    // (3.9) weighs term l by [gamma_l(nu^{m+1}) / gamma(nu^{m+1})]^(r-1), so the step's system
+    // is F(z) = M(w(nu(X(z)))) z - b(w(nu(X(z)))) = 0 with X(z) = X^m + T z. The lagged
+    // (Picard) iteration of §4.2 solves with the weights of the last iterate; for large r the
+    // weights switch between terms within a degree of rotation and the BGN tangential motion
+    // rotates facets by more than that, so Picard cycles (r = 30 does not converge even at
+    // tau = 1e-6 from a half sphere). Newton's method on F, with the weight derivative of
+    // assemble_weight_jacobian and a backtracking line search on |F|, solves the same system.
     const double size = cluster_size(c.positions());
-    Anderson accel(8); // depth 8: r = 10 at tau = 1e-2 on a coarse sphere in ~30 solves, not 100+
-    Eigen::VectorXd x = flatten(X);
+    const auto residual = [&](const Eigen::VectorXd& zk, const std::vector<Vec3>& Xk) {
+        const FacetNormals nu = facet_normals(c, Xk);
+        System& sys = assemble(c, flow, tau, P, &nu, report);
+        return Eigen::VectorXd(sys.matrix.finish() * zk - sys.rhs);
+    };
+    std::vector<Vec3> X = displaced(c, P, z);
+    Eigen::VectorXd F = residual(z, X);
     report.fixed_point_iterations = 1;
     for (;;) {
-        const std::vector<Vec3> Xk = unflatten(x);
-        if (auto [s, f] = find_degenerate_facet(c, Xk); s >= 0)
-            throw GeometryError("step: the fixed-point iterate " +
-                                std::to_string(report.fixed_point_iterations) + " collapses " +
-                                facet_name(s, f) + " (tau = " + fmt(tau) + ")");
-        const FacetNormals lagged = facet_normals(c, Xk);
-        std::vector<Vec3> G = solve_once(c, flow, tau, &lagged, report);
+        System& sys = flow == Flow::MeanCurvature ? *mcf_ : *sd_;
+        assemble_weight_jacobian(c, P, X, static_cast<int>(z.size()), sys.weight_jacobian);
+        const SparseMatrix J = sys.matrix.finish() + sys.weight_jacobian.finish();
+        const Eigen::VectorXd dz = solve_checked(sys.newton, J, -F, tau, report);
         ++report.fixed_point_iterations;
-        report.fixed_point_change = max_change(G, Xk) / size;
+        // Converged when the full Newton update moves no vertex by more than tol.
+        std::vector<Vec3> Xt = displaced(c, P, z + dz);
+        report.fixed_point_change = max_change(Xt, X) / size;
         if (report.fixed_point_change <= fixed_point_.tol) {
-            X = std::move(G);
+            z += dz;
             return;
         }
         if (report.fixed_point_iterations >= fixed_point_.max_iterations)
             throw ConvergenceError(
-                "step: the lagged fixed-point iteration for r > 1 did not converge in " +
+                "step: Newton's method for the r > 1 system (3.9) did not converge in " +
                 std::to_string(report.fixed_point_iterations) + " solves (last relative change " +
                 fmt(report.fixed_point_change) + ", tol " + fmt(fixed_point_.tol) +
                 ", tau = " + fmt(tau) + ", after " + std::to_string(fixed_point_.max_halvings) +
                 " halvings of the step); the cluster is unchanged (try a smaller tau)");
-        x = accel.next(x, flatten(G));
+        // Backtracking: halve the update until |F| decreases and no facet folds over.
+        const double norm = F.norm();
+        for (double alpha = 1.0;; alpha *= 0.5) {
+            if (alpha < 1e-6)
+                throw ConvergenceError("step: Newton's method for the r > 1 system (3.9) found "
+                                       "no update that decreases its residual (tau = " +
+                                       fmt(tau) + "); the cluster is unchanged");
+            if (alpha < 1.0) Xt = displaced(c, P, z + alpha * dz);
+            if (find_degenerate_facet(c, Xt).first >= 0) continue;
+            Eigen::VectorXd Ft = residual(z + alpha * dz, Xt);
+            if (!(Ft.norm() < (1 - 1e-4 * alpha) * norm)) continue;
+            z += alpha * dz, X = std::move(Xt), F = std::move(Ft);
+            break;
+        }
     }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 /// Time stepping of the seed's schemes: mean curvature flow (3.7a,b)/(3.10a,b) solved as the SPD
 /// system (4.6b) on CHOLMOD, surface diffusion (3.8a,b)/(3.11a,b) as a symmetric saddle point on
-/// UMFPACK (numerics.md §5); r > 1 anisotropies by the lagged fixed-point iteration of §4.2. Each flow's system keeps its sparsity pattern and symbolic
+/// UMFPACK (numerics.md §5); r > 1 anisotropies by Newton's method on the nonlinear system of
+/// (3.9) (numerics.md "Anisotropic schemes"). Each flow's system keeps its sparsity pattern and symbolic
 /// factorisation for the life of the stepper; a numeric factorisation is reused across steps
 /// as long as it preconditions GMRES well (solvers/sparse_solvers.h).
 
@@ -42,8 +43,9 @@ struct StepReport : Report {
     int unknowns = 0;
     int solver_iterations = 0; ///< GMRES iterations on top of the (possibly lagged) factor
     bool refactorized = false; ///< this step made a new numeric factorisation
-    /// r > 1 only (0 otherwise): the linear solves of the lagged iteration, and the last
-    /// change max_v |X_v^(k) - X_v^(k-1)| relative to the cluster's size.
+    /// r > 1 only (0 otherwise): the linear solves of the nonlinear iteration (the first
+    /// solve with the weights at nu^m, then one per Newton step), and the last full Newton
+    /// update max_v |dX_v|_inf relative to the cluster's size.
     int fixed_point_iterations = 0;
     double fixed_point_change = 0;
     /// Steps of the scheme this step was made of: 1, or more when an r > 1 iteration failed
@@ -51,10 +53,12 @@ struct StepReport : Report {
     int substeps = 1;
 };
 
-/// The lagged fixed-point iteration for r > 1 (numerics.md §5), Anderson-accelerated: stop
-/// when a solve moves the positions by less than tol relative to the cluster's size. A step
-/// whose iteration needs more than max_iterations solves is split into two steps of tau/2, at
-/// most max_halvings times in a row; beyond that it is a ConvergenceError.
+/// The nonlinear iteration for r > 1 (Newton's method on (3.9), numerics.md "Anisotropic
+/// schemes"): stop when a full Newton update moves no coordinate by more than tol relative to
+/// the cluster's size. A step whose iteration needs more than max_iterations solves (or finds
+/// no descent) is split into two steps of tau/2, at most max_halvings times in a row; beyond
+/// that it is a ConvergenceError. (The name is the seed's: the solution is the fixed point of
+/// its lagged iteration, §4.2.)
 struct FixedPointOptions {
     double tol = 1e-8;
     int max_iterations = 60;
@@ -80,12 +84,16 @@ class TimeStepper {
     struct System;
     StepReport step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls);
     StepReport step_halving(Cluster& c, Flow flow, double tau, bool project, int halvings);
-    /// One linear solve of the step's system with the r > 1 weights at `lagged`; returns X^m + dX.
-    std::vector<Vec3> solve_once(Cluster& c, Flow flow, double tau, const FacetNormals* lagged,
-                                 StepReport& report);
-    /// The lagged iteration of §4.2 from the first iterate X (weights at nu^m) to convergence.
-    void iterate_lagged(Cluster& c, Flow flow, double tau, std::vector<Vec3>& X,
-                        StepReport& report);
+    /// Assembles the step's system (matrix and rhs) with the r > 1 weights at `lagged`.
+    System& assemble(Cluster& c, Flow flow, double tau, const PositionBasis& P,
+                     const FacetNormals* lagged, StepReport& report);
+    /// One linear solve of the step's system with the r > 1 weights at `lagged`; returns the
+    /// reduced unknowns z (positions X^m + T z first).
+    Eigen::VectorXd solve_once(Cluster& c, Flow flow, double tau, const PositionBasis& P,
+                               const FacetNormals* lagged, StepReport& report);
+    /// Newton's method for the r > 1 system (3.9) from z (weights at nu^m) to convergence.
+    void iterate_newton(Cluster& c, Flow flow, double tau, const PositionBasis& P,
+                        Eigen::VectorXd& z, StepReport& report);
     FixedPointOptions fixed_point_;
     int revision_ = -1; ///< the cluster's assembly_revision() the patterns were built for
     std::unique_ptr<System> mcf_, sd_;

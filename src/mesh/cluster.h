@@ -123,7 +123,7 @@ class Cluster {
     void set_mobility(int surface, Mobility beta);
     /// True if some surface is anisotropic.
     bool anisotropic() const;
-    /// True if some surface has r > 1: its scheme is nonlinear (lagged iteration, §4.2).
+    /// True if some surface has r > 1: its scheme is nonlinear ((3.9), solved by Newton).
     bool nonlinear() const;
     /// True if some mobility is not the constant 1.
     bool has_mobilities() const;

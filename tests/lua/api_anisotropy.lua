@@ -1,7 +1,7 @@
 -- Anisotropic surface energies and mobilities: froth.anisotropy and the froth.anisotropies
 -- presets against the closed forms of (1.15)-(1.17) and (5.6); gamma', gamma* and their identities;
 -- c:set_anisotropy / set_mobility in the energy and in steps; the fixed_point option and the
--- step report fields of the r > 1 lagged iteration; every error naming its problem.
+-- step report fields of the r > 1 iteration; every error naming its problem.
 local T = require("froth.test")
 local A = froth.anisotropies
 local sqrt, pi = math.sqrt, math.pi
@@ -346,7 +346,7 @@ end
 local plain = db:clone():step{flow = "sd", tau = 1e-3}
 T.assert_equal(plain.fixed_point_iterations, 0, "isotropic: fixed_point_iterations = 0")
 
--- r = 3: the lagged iteration of (3.9) converges to the tolerance in a few solves.
+-- r = 3: Newton's method for (3.9) converges to the tolerance in a few solves.
 local c3 = with(A.l1{eps = 0.1, r = 3})
 for _, flow in ipairs{"sd", "mcf"} do
   local r = c3:step{flow = flow, tau = 1e-3}
@@ -383,7 +383,7 @@ end
 -- No convergence: an error naming the iteration, and the cluster unchanged; evolve stops.
 local cn = with(A.l1{eps = 0.1, r = 3})
 local before = cn:clone()
-bad("step: the lagged fixed-point iteration for r > 1 did not converge in 2 solves", cn.step, cn,
+bad("step: Newton's method for the r > 1 system (3.9) did not converge in 2 solves", cn.step, cn,
     {flow = "sd", tau = 1e-3, fixed_point = {max_iterations = 2, max_halvings = 0}})
 bad("after 2 halvings of the step); the cluster is unchanged", cn.step, cn,
     {flow = "sd", tau = 1e-3, fixed_point = {max_iterations = 2, max_halvings = 2}})
@@ -391,7 +391,7 @@ T.assert_true(cn:time() == 0 and maxdiff(cn, before) == 0, "no convergence: the 
 local rn = cn:evolve{flow = "sd", tau = 1e-3, steps = 3, progress = false,
                      fixed_point = {max_iterations = 2, max_halvings = 0}}
 T.assert_equal(rn.steps, 0, "evolve: no step taken")
-T.assert_true(rn.stop_reason:find("no convergence: step: the lagged fixed-point iteration", 1, true) == 1,
+T.assert_true(rn.stop_reason:find("no convergence: step: Newton's method for the r > 1 system", 1, true) == 1,
               "evolve stops with 'no convergence: ...'", rn.stop_reason)
 T.assert_true(cn:time() == 0 and maxdiff(cn, before) == 0, "evolve: the cluster is unchanged")
 -- Options are per call: the next step uses the defaults again.

@@ -205,6 +205,33 @@ TEST(AnisotropyGamma, LaggedWeightsReproduceGamma) {
     }
 }
 
+TEST(AnisotropyGamma, WeightGradientsMatchCentralDifferences) {
+    // dw_l/dp of the (3.9) weights, at unit and non-unit p (homogeneous of degree -1).
+    std::mt19937 rng(6);
+    const double h = 1e-7;
+    for (const Named& n : all_presets()) {
+        const Anisotropy& g = n.gamma;
+        double worst = 0.0;
+        for (int i = 0; i < 20; ++i) {
+            const Vector3d p = random_vector(rng).normalized() * (i % 2 ? 2.5 : 1.0);
+            const std::vector<Vector3d> d = g.term_weight_gradients(p);
+            ASSERT_EQ(static_cast<int>(d.size()), g.n_terms());
+            for (int k = 0; k < 3; ++k) {
+                const Vector3d e = h * Vector3d::Unit(k);
+                const std::vector<double> wp = g.term_weights(p + e), wm = g.term_weights(p - e);
+                for (int l = 0; l < g.n_terms(); ++l)
+                    worst = std::max(worst, std::abs(d[l][k] - (wp[l] - wm[l]) / (2 * h)));
+            }
+            for (int l = 0; l < g.n_terms(); ++l) {
+                if (g.r() == 1.0) EXPECT_EQ(d[l].norm(), 0.0) << n.name;
+                EXPECT_NEAR(d[l].dot(p), 0.0, 1e-12 * (1 + d[l].norm())) << n.name; // degree 0
+            }
+        }
+        // the r = 30 weights switch within a few degrees: gradients up to ~50, FD error ~1e-6
+        EXPECT_LT(worst, 1e-5) << n.name;
+    }
+}
+
 // --- gamma* ----------------------------------------------------------------------------------
 
 TEST(AnisotropyStar, ClosedFormsForOneTerm) {
@@ -333,6 +360,38 @@ TEST(AnisotropyElement, MatrixTimesPositionsIsTheEnergyGradient) {
                 << n.name;
         }
         EXPECT_LT(worst, 1e-8) << n.name; // measured: at most 5.4e-10 (fig3_right)
+    }
+}
+
+// Newton's method for (3.9): d/dy [M(nu(y)) y] = M(nu(y)) + weight_jacobian(x, y), M built on
+// the triangle x with its weights at the normal of y, checked by central differences in y.
+TEST(AnisotropyElement, WeightJacobianIsTheDerivativeOfTheLaggedWeights) {
+    std::mt19937 rng(11);
+    const double h = 1e-7;
+    for (const Named& n : all_presets()) {
+        double worst = 0.0;
+        for (int t = 0; t < 5; ++t) {
+            const Tri x = random_triangle(rng);
+            Tri y = x;
+            for (Vector3d& v : y) v += random_vector(rng, 0.1);
+            const auto action = [&](const Tri& z) {
+                const Vector3d nu = (z[1] - z[0]).cross(z[2] - z[0]).normalized();
+                Eigen::Matrix<double, 9, 1> Z;
+                for (int a = 0; a < 3; ++a) Z.segment<3>(3 * a) = z[a];
+                return Eigen::Matrix<double, 9, 1>(element_matrix(n.gamma, x, nu) * Z);
+            };
+            const Vector3d nu_y = (y[1] - y[0]).cross(y[2] - y[0]).normalized();
+            const ElementMatrix J = element_matrix(n.gamma, x, nu_y) + weight_jacobian(n.gamma, x, y);
+            for (int k = 0; k < 9; ++k) {
+                Tri yp = y, ym = y;
+                yp[k / 3][k % 3] += h;
+                ym[k / 3][k % 3] -= h;
+                const Eigen::Matrix<double, 9, 1> fd = (action(yp) - action(ym)) / (2 * h);
+                worst = std::max(worst, (J.col(k) - fd).cwiseAbs().maxCoeff() / (1 + J.norm()));
+            }
+            if (n.gamma.r() == 1.0) EXPECT_EQ(weight_jacobian(n.gamma, x, y).norm(), 0.0);
+        }
+        EXPECT_LT(worst, 1e-6) << n.name;
     }
 }
 
