@@ -1,6 +1,7 @@
 -- froth.measure: measurements of clusters that datafiles and tests share.
 --   local measure = require("froth.measure")
 --   local mean, lo, hi = measure.axis_distances(c)
+--   local dev, r = measure.wulff_deviation(c, gamma, {half = true})
 local M = {}
 
 --- Mean, smallest and largest distance of the cluster's vertices from the x3 axis; with
@@ -16,6 +17,23 @@ function M.axis_distances(c, keep)
   end
   if n == 0 then return nil end
   return sum / n, lo, hi
+end
+
+--- How far the film of body 1 is from the boundary of the scaled Wulff shape rW of gamma with
+--- the same volume: max over the vertices of |gamma*(X_v)/r - 1| (0 exactly on the boundary of
+--- rW centred at the origin; a relative distance in the Wulff metric), and r. With
+--- `opts.half`, body 1 is the upper half (x3 >= 0) of rW resting on x3 = 0 (for a gamma even
+--- in x3, so that it holds half of |rW|). |W| is that of froth.wulff_shape (level 4 plus the
+--- facet directions: an outer polytope, within 0.3% of |W|, so r within 0.1%); needs CGAL.
+function M.wulff_deviation(c, gamma, opts)
+  local W = froth.wulff_shape(gamma):volumes()[1]
+  if opts and opts.half then W = W / 2 end
+  local r = (c:volumes()[1] / W) ^ (1 / 3)
+  local dev = 0
+  for v = 1, c:info().vertices do
+    dev = math.max(dev, math.abs(gamma:gamma_star(c:vertex(v)) / r - 1))
+  end
+  return dev, r
 end
 
 return M
