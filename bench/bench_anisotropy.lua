@@ -1,10 +1,11 @@
 -- bench/bench_anisotropy.lua — the cost of anisotropy (issue 5): steps of the default double
 -- bubble (SD) and of the structured half sphere on a plane (SD, K = 1089) with gamma = |.| (the
 -- isotropic fast path), r = 1 anisotropies (one linear solve, a 9x9 element matrix per facet),
--- and the regularised l1 norm (5.6) with r = 3, 10, 30 (the Anderson-accelerated lagged
--- iteration of (3.9): solves per step). Prints markdown rows for docs/benchmarks.md.
+-- and the regularised l1 norm (5.6) with r = 3, 10, 30 and Fig. 3 right (r = 30): Newton's
+-- method on the nonlinear system of (3.9), solves per step. Prints markdown rows for
+-- docs/benchmarks.md.
 --
---   build/froth bench/bench_anisotropy.lua              (about a minute on 2 cores)
+--   build/froth bench/bench_anisotropy.lua              (a few minutes on 2 cores)
 --   build/froth bench/bench_anisotropy.lua steps=5
 local script = require("froth.script")
 local opts = script.options({steps = 10, tau = 1e-3, h = 0.08}, arg)
@@ -18,6 +19,7 @@ local gammas = {
   {"l1 eps 0.01, r = 3", A.l1{eps = 0.01, r = 3}},
   {"l1 eps 0.01, r = 10", A.l1{eps = 0.01, r = 10}},
   {"fig3_left (r = 30)", A.fig3_left{}},
+  {"fig3_right (r = 30)", A.fig3_right{}},
 }
 
 local scenes = {

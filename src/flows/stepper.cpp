@@ -221,8 +221,8 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
     report.energy_before = energy(c);
 
     const PositionBasis P(c);
-    Eigen::VectorXd z = solve_once(c, flow, tau, P, nullptr, report);
-    if (c.nonlinear()) iterate_newton(c, flow, tau, P, z, report);
+    const Eigen::VectorXd z = c.nonlinear() ? solve_newton(c, flow, tau, P, report)
+                                            : solve_once(c, flow, tau, P, nullptr, report);
     std::vector<Vec3> X = displaced(c, P, z);
     if (project_onto_walls) project_vertices(c, X);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
@@ -244,8 +244,8 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
     return report;
 }
 
-void TimeStepper::iterate_newton(Cluster& c, Flow flow, double tau, const PositionBasis& P,
-                                 Eigen::VectorXd& z, StepReport& report) {
+Eigen::VectorXd TimeStepper::solve_newton(Cluster& c, Flow flow, double tau,
+                                          const PositionBasis& P, StepReport& report) {
     // (3.9) weighs term l by [gamma_l(nu^{m+1}) / gamma(nu^{m+1})]^(r-1), so the step's system
     // is F(z) = M(w(nu(X(z)))) z - b(w(nu(X(z)))) = 0 with X(z) = X^m + T z. The lagged
     // (Picard) iteration of §4.2 solves with the weights of the last iterate; for large r the
@@ -253,15 +253,18 @@ void TimeStepper::iterate_newton(Cluster& c, Flow flow, double tau, const Positi
     // rotates facets by more than that, so Picard cycles (r = 30 does not converge even at
     // tau = 1e-6 from a half sphere). Newton's method on F, with the weight derivative of
     // assemble_weight_jacobian and a backtracking line search on |F|, solves the same system.
+    // It starts at X^m (z = 0), not at the linear solve with the weights at nu^m: that solve
+    // can move vertices tangentially by 40% of the cluster's size (r = 10, double bubble),
+    // from where Newton does not recover; from X^m the line search keeps the first update sane.
     const double size = cluster_size(c.positions());
     const auto residual = [&](const Eigen::VectorXd& zk, const std::vector<Vec3>& Xk) {
         const FacetNormals nu = facet_normals(c, Xk);
         System& sys = assemble(c, flow, tau, P, &nu, report);
         return Eigen::VectorXd(sys.matrix.finish() * zk - sys.rhs);
     };
-    std::vector<Vec3> X = displaced(c, P, z);
-    Eigen::VectorXd F = residual(z, X);
-    report.fixed_point_iterations = 1;
+    Eigen::VectorXd F = -assemble(c, flow, tau, P, nullptr, report).rhs; // F(0): nu(X^m) = nu^m
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(F.size());
+    std::vector<Vec3> X = c.positions();
     for (;;) {
         System& sys = flow == Flow::MeanCurvature ? *mcf_ : *sd_;
         assemble_weight_jacobian(c, P, X, static_cast<int>(z.size()), sys.weight_jacobian);
@@ -271,10 +274,7 @@ void TimeStepper::iterate_newton(Cluster& c, Flow flow, double tau, const Positi
         // Converged when the full Newton update moves no vertex by more than tol.
         std::vector<Vec3> Xt = displaced(c, P, z + dz);
         report.fixed_point_change = max_change(Xt, X) / size;
-        if (report.fixed_point_change <= fixed_point_.tol) {
-            z += dz;
-            return;
-        }
+        if (report.fixed_point_change <= fixed_point_.tol) return z + dz;
         if (report.fixed_point_iterations >= fixed_point_.max_iterations)
             throw ConvergenceError(
                 "step: Newton's method for the r > 1 system (3.9) did not converge in " +

@@ -43,9 +43,9 @@ struct StepReport : Report {
     int unknowns = 0;
     int solver_iterations = 0; ///< GMRES iterations on top of the (possibly lagged) factor
     bool refactorized = false; ///< this step made a new numeric factorisation
-    /// r > 1 only (0 otherwise): the linear solves of the nonlinear iteration (the first
-    /// solve with the weights at nu^m, then one per Newton step), and the last full Newton
-    /// update max_v |dX_v|_inf relative to the cluster's size.
+    /// r > 1 only (0 otherwise): the linear solves of the nonlinear iteration (one per
+    /// Newton step), and the last full Newton update max_v |dX_v|_inf relative to the
+    /// cluster's size.
     int fixed_point_iterations = 0;
     double fixed_point_change = 0;
     /// Steps of the scheme this step was made of: 1, or more when an r > 1 iteration failed
@@ -91,9 +91,9 @@ class TimeStepper {
     /// reduced unknowns z (positions X^m + T z first).
     Eigen::VectorXd solve_once(Cluster& c, Flow flow, double tau, const PositionBasis& P,
                                const FacetNormals* lagged, StepReport& report);
-    /// Newton's method for the r > 1 system (3.9) from z (weights at nu^m) to convergence.
-    void iterate_newton(Cluster& c, Flow flow, double tau, const PositionBasis& P,
-                        Eigen::VectorXd& z, StepReport& report);
+    /// Newton's method for the r > 1 system (3.9), from X^m to convergence; returns z.
+    Eigen::VectorXd solve_newton(Cluster& c, Flow flow, double tau, const PositionBasis& P,
+                                 StepReport& report);
     FixedPointOptions fixed_point_;
     int revision_ = -1; ///< the cluster's assembly_revision() the patterns were built for
     std::unique_ptr<System> mcf_, sd_;
