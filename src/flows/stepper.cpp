@@ -121,6 +121,7 @@ TimeStepper::System& TimeStepper::assemble(Cluster& c, Flow flow, double tau,
 
 namespace {
 
+/// Solves M x = b, adding the cost to the report; non-finite results are a SolverError.
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
                               const Eigen::VectorXd& b, double tau, StepReport& report) {
     const auto t1 = Clock::now();
@@ -282,7 +283,7 @@ Eigen::VectorXd TimeStepper::solve_newton(Cluster& c, Flow flow, double tau,
                 fmt(report.fixed_point_change) + ", tol " + fmt(fixed_point_.tol) +
                 ", tau = " + fmt(tau) + ", after " + std::to_string(fixed_point_.max_halvings) +
                 " halvings of the step); the cluster is unchanged (try a smaller tau)");
-        // Backtracking: halve the update until |F| decreases and no facet folds over.
+        // Backtracking: halve the update until |F| decreases and no facet degenerates.
         const double norm = F.norm();
         for (double alpha = 1.0;; alpha *= 0.5) {
             if (alpha < 1e-6)
