@@ -24,20 +24,17 @@ local info = c:info()
 print(("cylinder (5.3), rho = %g, alpha = %g: %d vertices, %d facets (seed: K = 4160, J = 8192)")
       :format(opts.rho, opts.alpha, info.vertices, info.facets))
 
-local drift = 0
-local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
-                   T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
-                   every = opts.every,
-                   output = (opts.output ~= "" and not opts.smoke) and opts.output or nil,
-                   on_step = function(s) drift = math.max(drift, s.wall_drift) end}
-
-local exact = math.sqrt(c:volumes()[1] / (math.pi * opts.rho))
-local mean, lo, hi = require("froth.measure").axis_distances(c)
+local measure = require("froth.measure")
+local r = measure.evolve_tracking_drift(c, {
+  flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
+  T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil, every = opts.every,
+  output = (opts.output ~= "" and not opts.smoke) and opts.output or nil})
+local drift = r.largest_wall_drift
+local fit = measure.cylinder_fit(c, opts.rho)
+local exact = fit.exact
 local ca = r.contact_angles
 print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
-print(("radius: mean %.5f  min %.5f  max %.5f   cylinder of the same volume sqrt(V/(pi rho)) = "
-       .. "%.5f   mean %+.3f%%, spread %.3f%%   (seed: a cylinder)")
-      :format(mean, lo, hi, exact, 100 * (mean / exact - 1), 100 * (hi - lo) / exact))
+print(fit.summary .. (", spread %.3f%%   (seed: a cylinder)"):format(100 * (fit.hi - fit.lo) / exact))
 print(("contact angles min %.2f  max %.2f  mean %.2f degrees (exact 90)")
       :format(ca.min, ca.max, ca.mean))
 print(("area %.6f (the cylinder's 2 pi r rho = %.6f); volume loss %.4f%%; largest wall drift %.1e")

@@ -2,6 +2,8 @@
 --   local measure = require("froth.measure")
 --   local mean, lo, hi = measure.axis_distances(c)
 --   local dev, r = measure.wulff_deviation(c, gamma, {half = true})
+--   local r = measure.evolve_tracking_drift(c, {flow = "sd", tau = 1e-3, T = 1})
+--   local fit = measure.cylinder_fit(c, rho)
 local M = {}
 
 --- Mean, smallest and largest distance of the cluster's vertices from the x3 axis; with
@@ -17,6 +19,28 @@ function M.axis_distances(c, keep)
   end
   if n == 0 then return nil end
   return sum / n, lo, hi
+end
+
+--- c:evolve(options) (its on_step is taken over), with the result gaining
+--- `largest_wall_drift`: the largest `wall_drift` of the steps' reports (0 without walls).
+function M.evolve_tracking_drift(c, options)
+  local drift = 0
+  options.on_step = function(s) drift = math.max(drift, s.wall_drift or 0) end
+  local r = c:evolve(options)
+  r.largest_wall_drift = drift
+  return r
+end
+
+--- Body 1 against the cylinder of its volume standing in the slab 0 < x3 < rho: a table with
+--- `exact` = sqrt(V / (pi rho)), the `mean`, smallest (`lo`) and largest (`hi`) distance of the
+--- vertices from the x3 axis, and a one-line `summary` of them.
+function M.cylinder_fit(c, rho)
+  local exact = math.sqrt(c:volumes()[1] / (math.pi * rho))
+  local mean, lo, hi = M.axis_distances(c)
+  local pct = function(x) return 100 * (x / exact - 1) end
+  return {exact = exact, mean = mean, lo = lo, hi = hi,
+          summary = ("radius mean %.5f vs sqrt(V/(pi rho)) = %.5f (%+.3f%%), min %+.3f%% max %+.3f%%")
+                    :format(mean, exact, pct(mean), pct(lo), pct(hi))}
 end
 
 --- How far the film of body 1 is from the boundary of the scaled Wulff shape rW of gamma with
