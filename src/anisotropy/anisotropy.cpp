@@ -88,7 +88,11 @@ Anisotropy::Anisotropy(std::vector<Matrix3d> G, double r) : G_(std::move(G)), r_
         Gt_.push_back(std::sqrt(G_[l].determinant()) * G_[l].inverse());
         if (!Gt_.back().allFinite())
             throw InvalidInput(term_name(l) + ": G is too close to singular");
+        const Vector3d lambda =
+            Eigen::SelfAdjointEigenSolver<Matrix3d>(G_[l], Eigen::EigenvaluesOnly).eigenvalues();
+        nearly_crystalline_ = nearly_crystalline_ || lambda[2] >= 25.0 * lambda[1];
     }
+    nearly_crystalline_ = nearly_crystalline_ && G_.size() > 1;
     if (G_.size() == 1) {
         const double d = G_[0](0, 0);
         isotropic_ = (G_[0] - d * Matrix3d::Identity()).cwiseAbs().maxCoeff() <= 1e-15 * d;

@@ -52,6 +52,11 @@ class Anisotropy {
     /// Gt_l = det(G_l)^(1/2) G_l^-1, the metric of (1.24a,b).
     const Eigen::Matrix3d& G_tilde(int l) const { return Gt_[l]; }
     bool is_isotropic() const { return isotropic_; }
+    /// True if gamma has several terms and some is needle-like: the largest eigenvalue of G_l
+    /// at least 25 times the middle one (eps <= 0.2 in (1.17)). Such gamma (l1, hexagonal,
+    /// Fig. 3) are close to crystalline; their Wulff shapes have sharp edges and the schemes
+    /// make thin facets along them. (One needle term alone is a smooth elongated ellipsoid.)
+    bool nearly_crystalline() const { return nearly_crystalline_; }
 
     /// gamma_l(p) = sqrt(p . G_l p).
     double gamma_term(int l, const Eigen::Vector3d& p) const;
@@ -80,6 +85,7 @@ class Anisotropy {
     std::vector<Eigen::Matrix3d> Gt_;
     double r_ = 1.0;
     bool isotropic_ = false;
+    bool nearly_crystalline_ = false;
     // gamma_l for all l, with their maximum (to evaluate powers r without overflow).
     void terms(const Eigen::Vector3d& p, std::vector<double>& g, double& gmax) const;
 };

@@ -26,11 +26,15 @@ std::optional<TopologyEvent> vanishing_body(const Cluster& c, double fraction) {
 
 std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const WatchOptions& o) {
     const auto& X = c.positions();
-    double sum = 0, shortest = INFINITY, smallest_angle = 180;
+    // The facet angle furthest below its surface's limit, as angle / limit.
+    double sum = 0, shortest = INFINITY, angle_ratio = INFINITY, smallest_angle = 180;
     long count = 0;
     int s_edge = 0, f_edge = 0, s_angle = 0, f_angle = 0;
     for (int i = 0; i < c.n_surfaces(); ++i) {
-        const auto& tris = c.surface(i).triangles;
+        const Surface& s = c.surface(i);
+        const double limit = s.gamma && s.gamma->nearly_crystalline() ? 0.1 * o.min_facet_angle
+                                                                      : o.min_facet_angle;
+        const auto& tris = s.triangles;
         for (int f = 0; f < static_cast<int>(tris.size()); ++f)
             for (int k = 0; k < 3; ++k) {
                 const Vec3 u = X[tris[f][(k + 1) % 3]] - X[tris[f][k]];
@@ -39,7 +43,8 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
                 sum += len, ++count;
                 if (len < shortest) shortest = len, s_edge = i, f_edge = f;
                 const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
-                if (angle < smallest_angle) smallest_angle = angle, s_angle = i, f_angle = f;
+                if (angle / limit < angle_ratio)
+                    angle_ratio = angle / limit, smallest_angle = angle, s_angle = i, f_angle = f;
             }
     }
     auto facet = [](int s, int f) {
@@ -51,7 +56,7 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
                              "an edge of " + facet(s_edge, f_edge) + " is collapsing: length " +
                                  fmt(shortest) + ", mean edge " + fmt(mean) + at_time(c),
                              c.time()};
-    if (smallest_angle < o.min_facet_angle)
+    if (angle_ratio < 1)
         return TopologyEvent{"collapsing facet",
                              facet(s_angle, f_angle) + " is collapsing: corner angle " +
                                  fmt(smallest_angle) + " degrees" + at_time(c),

@@ -18,7 +18,10 @@ struct WatchOptions {
     /// An edge shorter than this fraction of the mean edge length is collapsing (a neck or a
     /// shrinking film concentrates short edges; a uniformly shrinking cluster does not).
     double min_edge_fraction = 0.02;
-    /// A facet corner angle below this (degrees) means a facet is collapsing.
+    /// A facet corner angle below this (degrees) means a facet is collapsing; on a surface
+    /// with a nearly crystalline anisotropy (Anisotropy::nearly_crystalline) a tenth of it:
+    /// there the schemes keep thin facets along the Wulff shape's edges (0.2-0.9 degrees in
+    /// the seed's Figs. 17-19) that do not collapse.
     double min_facet_angle = 0.5;
     /// Test for crossing facets (CGAL) every this many steps; 0 never.
     int self_intersection_every = 10;

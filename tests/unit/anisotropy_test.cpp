@@ -103,6 +103,18 @@ TEST(AnisotropyPresets, L1MatchesEquation56) {
 
 // Every (1.17) term is eps^2 I + (1 - eps^2) a a^T with a the first row of R(theta); the rows
 // below are worked out by hand from R1, R2, R3 of the seed, independently of the code.
+TEST(AnisotropyPresets, NearlyCrystallineMeansSeveralTermsOneNeedleLike) {
+    EXPECT_TRUE(Anisotropy::l1(0.199).nearly_crystalline()); // the limit 0.2 itself is round-off
+    EXPECT_TRUE(Anisotropy::l1(0.01).nearly_crystalline());
+    EXPECT_TRUE(Anisotropy::hexagonal().nearly_crystalline());
+    EXPECT_TRUE(Anisotropy::fig3_left().nearly_crystalline());
+    EXPECT_TRUE(Anisotropy::fig3_right().nearly_crystalline());
+    EXPECT_FALSE(Anisotropy::l1(0.21).nearly_crystalline());
+    EXPECT_FALSE(Anisotropy::isotropic(2.0).nearly_crystalline());
+    EXPECT_FALSE(Anisotropy::from_angles(0.01, {Vector3d::Zero()}).nearly_crystalline());
+    EXPECT_FALSE(Anisotropy::ellipsoidal(Eigen::Vector3d(1, 0.01, 0.01).asDiagonal()).nearly_crystalline());
+}
+
 TEST(AnisotropyPresets, TermsAreTheRotatedDiagonalOf117) {
     const double s = std::sqrt(0.5), h = std::sqrt(3.0) / 2;
     const double eps = 1e-2;

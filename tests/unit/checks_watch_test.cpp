@@ -1,10 +1,14 @@
 // Topology watch: crossing facets (CGAL), vanishing bodies, quadruple-point angles.
+#include "anisotropy/anisotropy.h"
 #include "checks/self_intersection.h"
 #include "geometry/geometry.h"
 #include "run/evolve.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
 
 namespace froth {
 namespace {
@@ -69,6 +73,41 @@ TEST(TopologyWatch, CanBeSwitchedOff) {
     const EvolveResult r = evolve(c, stepper, o);
     EXPECT_FALSE(r.event.has_value());
     EXPECT_EQ(r.stop_reason, "steps done");
+}
+
+/// The unit icosphere with one facet flattened: its third corner moved next to the midpoint of
+/// the opposite edge, so that the facet's two other angles are `degrees` (its edges stay long).
+Cluster sphere_with_thin_facet(double degrees) {
+    ClusterSpec s = test::icosphere(2);
+    const Tri t = s.surfaces[0].triangles[0];
+    const Vec3 a = s.vertices[t[0]], b = s.vertices[t[1]], c = s.vertices[t[2]];
+    const Vec3 mid = 0.5 * (a + b), ab = b - a;
+    const Vec3 across = (c - mid - (c - mid).dot(ab) / ab.squaredNorm() * ab).normalized();
+    s.vertices[t[2]] = mid + std::tan(degrees * M_PI / 180) * 0.5 * ab.norm() * across;
+    return Cluster(std::move(s));
+}
+
+// Nearly crystalline films keep thin facets along their Wulff edges (0.2-0.9 degrees in the
+// seed's Figs. 17-19): on their surfaces the collapsing-facet limit is a tenth of the default.
+TEST(TopologyWatch, CollapsingFacetLimitIsATenthOnNearlyCrystallineSurfaces) {
+    const TopologyWatch watch{WatchOptions{}}; // min_facet_angle 0.5
+    auto kind = [&](Cluster c) {
+        const auto e = watch.check(c, 1);
+        return e ? e->kind : std::string("none");
+    };
+    auto with = [](Cluster c, Anisotropy g) {
+        c.set_anisotropy(0, std::make_shared<const Anisotropy>(std::move(g)));
+        return c;
+    };
+    EXPECT_EQ(kind(sphere_with_thin_facet(1.0)), "none");
+    EXPECT_EQ(kind(sphere_with_thin_facet(0.2)), "collapsing facet");
+    EXPECT_EQ(kind(with(sphere_with_thin_facet(0.2), Anisotropy::l1(0.01))), "none");
+    EXPECT_EQ(kind(with(sphere_with_thin_facet(0.2), Anisotropy::hexagonal())), "none");
+    EXPECT_EQ(kind(with(sphere_with_thin_facet(0.02), Anisotropy::l1(0.01))), "collapsing facet");
+    // l1 with eps = 0.3 is not nearly crystalline, nor is one needle-like term (an ellipsoid).
+    EXPECT_EQ(kind(with(sphere_with_thin_facet(0.2), Anisotropy::l1(0.3))), "collapsing facet");
+    EXPECT_EQ(kind(with(sphere_with_thin_facet(0.2),
+                        Anisotropy::from_angles(0.01, {Vec3::Zero()}))), "collapsing facet");
 }
 
 // A regular tetrahedron cut into four cells from its centre: 10 straight triple lines meet
