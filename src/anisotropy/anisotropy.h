@@ -6,7 +6,6 @@
 ///   gamma(p)   = ( sum_l [gamma_l(p)]^r )^(1/r),  gamma_l(p) = sqrt(p . G_l p),  r >= 1   (1.15)
 ///   gamma'(p)  = gamma^(1-r) sum_l gamma_l^(r-1) G_l p / gamma_l                         (1.15)
 ///   gamma*(q)  = sup_{p != 0} (q . p) / gamma(p)                                          (1.16)
-///
 
 #include <Eigen/Dense>
 

@@ -1,11 +1,11 @@
 // The anisotropic schemes (3.7)/(3.8) with (3.9) on whole clusters: A_gamma X against the finite-
-// difference gradient of the discrete energy, unconditional stability (Theorem 3.2), the lagged
-// iteration for r > 1, mobilities, and the self-similar shrinking Wulff shape of (5.4)/(5.5).
+// difference gradient of the discrete energy, unconditional stability (Theorem 3.2), Newton's
+// method for r > 1, mobilities, and the self-similar shrinking Wulff shape of (5.4)/(5.5).
 #include "assembly/flow_systems.h"
-#include "solvers/sparse_solvers.h"
 #include "core/errors.h"
 #include "flows/stepper.h"
 #include "geometry/geometry.h"
+#include "solvers/sparse_solvers.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
