@@ -82,6 +82,12 @@ for _, case in ipairs(cases) do
   print(("  volume loss %.3f%% (seed: < 1%%), smallest facet angle %.2f degrees, largest edge ratio"
          .. " in a facet %.1f, most fixed-point solves %d")
         :format(100 * r.volume_loss, r.mesh.min_angle, r.mesh.max_edge_ratio, iterations))
+  local angles = c:report().angles
+  if angles then
+    print(("  triple lines: force imbalance of (2.3) %.3f (0 at the anisotropic equilibrium; the"
+           .. " isotropic Young angles are off by %.1f degrees)"):format(angles.force_imbalance,
+                                                                   angles.young_error))
+  end
   if case == "fig20" then
     local dev, scale = measure.wulff_deviation(c, c:anisotropy(1) or A.isotropic(1), {half = true})
     print(("  distance to the scaled half Wulff shape (r = %.4f): max |gamma*(X)/r - 1| = %.2e")

@@ -409,16 +409,19 @@ const luaL_Reg methods[] = {
 
 } // namespace
 
-/// Sets t[key] = {min, max, mean, count[, young_error]}; no angles (nil, not zeros) when
+/// Sets t[key] = {min, max, mean, count[, young_error, force_imbalance]}; no angles (nil, not zeros) when
 /// there is nothing to measure.
 void push_angles(lua_State* L, const AngleStats& a, const char* key, bool with_young) {
     if (a.count == 0) return;
-    lua_createtable(L, 0, 5);
+    lua_createtable(L, 0, 6);
     set_number(L, "min", a.min);
     set_number(L, "max", a.max);
     set_number(L, "mean", a.mean);
     set_integer(L, "count", a.count);
-    if (with_young) set_number(L, "young_error", a.young_error);
+    if (with_young) {
+        set_number(L, "young_error", a.young_error);
+        set_number(L, "force_imbalance", a.force_imbalance);
+    }
     lua_setfield(L, -2, key);
 }
 

@@ -43,7 +43,15 @@ struct AngleStats {
     /// Film angles only: the largest deviation (degrees) from the angles Young's law predicts
     /// for the tensions, cos theta_jk = (sigma_i^2 - sigma_j^2 - sigma_k^2) / (2 sigma_j sigma_k)
     /// (force balance sum_j sigma_j mu_j = 0); NaN if some tensions admit no balance.
+    /// Isotropic only: with anisotropies use force_imbalance.
     double young_error = 0;
+    /// Film angles only: the largest relative force imbalance of (2.3), the anisotropic
+    /// (Cahn–Hoffmann, Herring) force balance sum_j Pi_T gamma_j'(nu_j) = 0 with gamma_j =
+    /// sigma_j gamma_j and the normals nu_j = t x mu_j consistently oriented:
+    /// |sum_j Pi_T gamma_j'(nu_j)| / sum_j |Pi_T gamma_j'(nu_j)| over the line vertices, with
+    /// the fitted film directions mu_j. 0 at equilibrium up to the fits' error; for isotropic
+    /// films |sum_j sigma_j mu_j| / sum_j sigma_j (1/3 for angles 90/90/180, equal tensions).
+    double force_imbalance = 0;
 };
 /// Angles between the films at the triple lines, three per line vertex (quadruple points and
 /// line ends excluded). Each film's direction leaving the line is taken from a quadratic fit of

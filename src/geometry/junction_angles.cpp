@@ -114,6 +114,25 @@ double angle_between(const Vec3& a, const Vec3& b) {
     return std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
+/// The relative imbalance of (2.3) at a line point with tangent t where film j (of surface
+/// surfaces[j]) leaves in direction mu[j]: the normals t x mu_j are consistently oriented
+/// ((nu_j, mu_j) all turn the same way about t), and gamma' is odd for (1.15), so no sign of a
+/// surface's own normal field enters.
+double force_imbalance(const Cluster& c, const std::array<int, 3>& surfaces, const Vec3 mu[3],
+                       const Vec3& t) {
+    Vec3 sum = Vec3::Zero();
+    double scale = 0;
+    for (int j = 0; j < 3; ++j) {
+        const Surface& s = c.surface(surfaces[j]);
+        const Vec3 nu = t.cross(mu[j]);
+        Vec3 g = s.sigma * (s.gamma ? Vec3(s.gamma->gamma_prime(nu)) : nu);
+        g -= g.dot(t) * t;
+        sum += g;
+        scale += g.norm();
+    }
+    return scale > 0 ? sum.norm() / scale : 0;
+}
+
 /// Next vertex along the triple line that leaves v through junction edge e, or -1 at a line end.
 int next_on_line(const Cluster& c, int v, int e) {
     const JunctionEdge& edge = c.junction_edges()[e];
@@ -152,6 +171,8 @@ AngleStats triple_line_angles(const Cluster& c) {
             dir[j] = film_direction(c, two_ring(c, pf, v, e0.surfaces[j]), v, t, chord);
             sigma[j] = c.surface(e0.surfaces[j]).sigma;
         }
+        acc.stats.force_imbalance = std::max(acc.stats.force_imbalance,
+                                             force_imbalance(c, e0.surfaces, dir, t));
         for (int j = 0; j < 3; ++j) {
             const int k = (j + 1) % 3, i = (j + 2) % 3; // film i is opposite the angle (j, k)
             const double angle = angle_between(dir[j], dir[k]);
