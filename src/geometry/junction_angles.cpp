@@ -125,7 +125,7 @@ double force_imbalance(const Cluster& c, const std::array<int, 3>& surfaces, con
     for (int j = 0; j < 3; ++j) {
         const Surface& s = c.surface(surfaces[j]);
         const Vec3 nu = t.cross(mu[j]);
-        if (!(nu.norm() > 0.5)) return 0; // a degenerate fit; the angles report it as NaN
+        if (!(nu.norm() > 0.5)) return 0; // no film direction across the line: nothing to weigh
         Vec3 g = s.sigma * (s.gamma ? Vec3(s.gamma->gamma_prime(nu)) : nu);
         g -= g.dot(t) * t;
         sum += g;
