@@ -84,6 +84,8 @@ for _, case in ipairs(cases) do
         :format(100 * r.volume_loss, r.mesh.min_angle, r.mesh.max_edge_ratio, iterations))
   local angles = c:report().angles
   if angles then
+    -- Meaningful for smooth gamma (fig17: 0.022 at T = 1); with eps = 0.01 gamma' jumps with the
+    -- normal and the measure is dominated by the fitted normals (0.13-0.57).
     print(("  triple lines: force imbalance of (2.3) %.3f (0 at the anisotropic equilibrium; the"
            .. " isotropic Young angles are off by %.1f degrees)"):format(angles.force_imbalance,
                                                                    angles.young_error))
