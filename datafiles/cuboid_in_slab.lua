@@ -23,19 +23,8 @@ local info = c:info()
 print(("%g x %g x %g cuboid in the slab 0 < x3 < %g: %d vertices, %d facets")
       :format(opts.a, opts.b, opts.rho, opts.rho, info.vertices, info.facets))
 
-local measure = require("froth.measure")
-local r = measure.evolve_tracking_drift(c, {
-  flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
-  T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil, every = opts.every,
-  output = (opts.output ~= "" and not opts.smoke) and opts.output or nil})
+local r = require("froth.measure").run_in_slab(c, opts)
 local drift = r.largest_wall_drift
-local fit = measure.cylinder_fit(c, opts.rho)
-local exact = fit.exact
-local ca = r.contact_angles
-print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
-print(fit.summary .. (", spread %.3f%%   (seed: a cylinder)"):format(100 * (fit.hi - fit.lo) / exact))
-print(("contact angles min %.2f  max %.2f  mean %.2f degrees (exact 90)")
-      :format(ca.min, ca.max, ca.mean))
 print(("volume loss %.4f%%; largest wall drift %.1e"):format(100 * r.volume_loss, drift))
 print(("largest relative energy increase of a step: %.2e (stability: <= 0)")
       :format(r.max_energy_increase))

@@ -24,19 +24,8 @@ local info = c:info()
 print(("cylinder (5.3), rho = %g, alpha = %g: %d vertices, %d facets (seed: K = 4160, J = 8192)")
       :format(opts.rho, opts.alpha, info.vertices, info.facets))
 
-local measure = require("froth.measure")
-local r = measure.evolve_tracking_drift(c, {
-  flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
-  T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil, every = opts.every,
-  output = (opts.output ~= "" and not opts.smoke) and opts.output or nil})
-local drift = r.largest_wall_drift
-local fit = measure.cylinder_fit(c, opts.rho)
-local exact = fit.exact
-local ca = r.contact_angles
-print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
-print(fit.summary .. (", spread %.3f%%   (seed: a cylinder)"):format(100 * (fit.hi - fit.lo) / exact))
-print(("contact angles min %.2f  max %.2f  mean %.2f degrees (exact 90)")
-      :format(ca.min, ca.max, ca.mean))
+local r, fit = require("froth.measure").run_in_slab(c, opts)
+local exact, drift = fit.exact, r.largest_wall_drift
 print(("area %.6f (the cylinder's 2 pi r rho = %.6f); volume loss %.4f%%; largest wall drift %.1e")
       :format(c:area(), 2 * math.pi * exact * opts.rho, 100 * r.volume_loss, drift))
 print(("largest relative energy increase of a step: %.2e (stability: <= 0)")

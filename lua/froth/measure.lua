@@ -43,6 +43,24 @@ function M.cylinder_fit(c, rho)
                     :format(mean, exact, pct(mean), pct(lo), pct(hi))}
 end
 
+--- The slab datafiles' run (cuboid_in_slab.lua, cylinder_in_slab.lua): SD with the script
+--- options opts (tau, tau_start, T, every, output, rho; 3 steps when opts.smoke), then prints
+--- the stop, the radii against the cylinder of the same volume and the contact angles.
+--- Returns the evolve result (with largest_wall_drift) and the cylinder_fit.
+function M.run_in_slab(c, opts)
+  local r = M.evolve_tracking_drift(c, {
+    flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
+    T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil, every = opts.every,
+    output = (opts.output ~= "" and not opts.smoke) and opts.output or nil})
+  local fit = M.cylinder_fit(c, opts.rho)
+  local ca = r.contact_angles
+  print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
+  print(fit.summary .. (", spread %.3f%%   (seed: a cylinder)"):format(100 * (fit.hi - fit.lo) / fit.exact))
+  print(("contact angles min %.2f  max %.2f  mean %.2f degrees (exact 90)")
+        :format(ca.min, ca.max, ca.mean))
+  return r, fit
+end
+
 --- How far the film of body 1 is from the boundary of the scaled Wulff shape rW of gamma with
 --- the same volume: max over the vertices of |gamma*(X_v)/r - 1| (0 exactly on the boundary of
 --- rW centred at the origin; a relative distance in the Wulff metric), and r. With
