@@ -28,14 +28,7 @@ local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start, -- r
                    on_step = function(s) drift = math.max(drift, s.wall_drift) end}
 
 -- The half sphere of the same volume V = 2 pi R^3 / 3 has the film area 2 pi R^2.
-local V = c:volumes()[1]
-local R = (3 * V / (2 * math.pi)) ^ (1 / 3)
-local lo, hi = math.huge, -math.huge
-for v = 1, c:info().vertices do
-  local x = c:vertex(v)
-  local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2 + x[3] ^ 2)
-  lo, hi = math.min(lo, d), math.max(hi, d)
-end
+local R, lo, hi = require("froth.measure").half_sphere_fit(c)
 local ca = r.contact_angles
 print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
 print(("area %.6f   half sphere of the same volume %.6f   error %+.3f%%   (seed: a half sphere)")
@@ -45,7 +38,7 @@ print(("distance from the origin %.5f..%.5f, R = %.5f (%+.2f%%..%+.2f%%)")
 print(("contact angles min %.2f  max %.2f  mean %.2f degrees (exact 90)")
       :format(ca.min, ca.max, ca.mean))
 print(("volume %.6f, volume loss %.3f%%; largest wall drift %.1e (a plane: round-off)")
-      :format(V, 100 * r.volume_loss, drift))
+      :format(c:volumes()[1], 100 * r.volume_loss, drift))
 print(("largest relative energy increase of a step: %.2e (stability: <= 0)")
       :format(r.max_energy_increase))
 if not opts.smoke and opts.output ~= "" then print("ParaView series: " .. opts.output) end

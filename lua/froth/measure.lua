@@ -43,6 +43,59 @@ function M.cylinder_fit(c, rho)
                     :format(mean, exact, pct(mean), pct(lo), pct(hi))}
 end
 
+--- Body 1 against the half ball on x3 = 0 of the same volume V = 2 pi R^3 / 3, centred at the
+--- origin: returns R and the smallest and largest vertex distance from the origin.
+function M.half_sphere_fit(c)
+  local R = (3 * c:volumes()[1] / (2 * math.pi)) ^ (1 / 3)
+  local lo, hi = math.huge, -math.huge
+  for v = 1, c:info().vertices do
+    local x = c:vertex(v)
+    local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2 + x[3] ^ 2)
+    lo, hi = math.min(lo, d), math.max(hi, d)
+  end
+  return R, lo, hi
+end
+
+--- The sphere |x - (0, 0, z0)| = a that best fits the cluster's vertices (least squares on
+--- |x|^2 = 2 z0 x3 + k, center on the x3 axis): returns z0 and the mean, smallest and largest
+--- vertex distance from (0, 0, z0) (the mean is the radius a).
+function M.axial_sphere_fit(c)
+  local n, sz, ss, szz, szs = c:info().vertices, 0, 0, 0, 0
+  for v = 1, n do
+    local x = c:vertex(v)
+    local s = x[1] ^ 2 + x[2] ^ 2 + x[3] ^ 2
+    sz, ss, szz, szs = sz + x[3], ss + s, szz + x[3] ^ 2, szs + x[3] * s
+  end
+  local z0 = (n * szs - sz * ss) / (n * szz - sz * sz) / 2
+  local sum, lo, hi = 0, math.huge, -math.huge
+  for v = 1, n do
+    local x = c:vertex(v)
+    local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2 + (x[3] - z0) ^ 2)
+    sum, lo, hi = sum + d, math.min(lo, d), math.max(hi, d)
+  end
+  return z0, sum / n, lo, hi
+end
+
+--- The radius a of the spherical cap of volume V outside the ball |x| <= R that meets its
+--- sphere orthogonally (centre at distance sqrt(R^2 + a^2)): 4 pi a^3 / 3 less the lens the
+--- two balls share, solved by bisection.
+function M.orthogonal_cap_radius(R, V)
+  local pi = math.pi
+  local function cap_volume(b)
+    local d = math.sqrt(R * R + b * b)
+    local lens = pi * (R + b - d) ^ 2 * (d * d + 2 * d * b - 3 * b * b + 2 * d * R + 6 * b * R
+                                         - 3 * R * R) / (12 * d)
+    return 4 * pi * b ^ 3 / 3 - lens
+  end
+  local lo, hi = 0, 10 * R
+  while cap_volume(hi) < V do hi = 2 * hi end
+  for _ = 1, 100 do
+    local m = (lo + hi) / 2
+    if cap_volume(m) < V then lo = m else hi = m end
+  end
+  return (lo + hi) / 2
+end
+
 --- The slab datafiles' run (cuboid_in_slab.lua, cylinder_in_slab.lua): SD with the script
 --- options opts (tau, tau_start, T, every, output, rho; 3 steps when opts.smoke), then prints
 --- the stop, the radii against the cylinder of the same volume and the contact angles.

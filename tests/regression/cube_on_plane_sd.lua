@@ -17,14 +17,7 @@ local drift = 0
 local r = c:evolve{flow = "sd", tau = 5e-4, tau_start = 1e-8, tau_growth = 1.05, T = 1,
                    progress = false,
                    on_step = function(s) drift = math.max(drift, s.wall_drift) end}
-local V = c:volumes()[1]
-local R = (3 * V / (2 * math.pi)) ^ (1 / 3)
-local lo, hi = math.huge, -math.huge
-for v = 1, c:info().vertices do
-  local x = c:vertex(v)
-  local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2 + x[3] ^ 2)
-  lo, hi = math.min(lo, d), math.max(hi, d)
-end
+local R, lo, hi = require("froth.measure").half_sphere_fit(c)
 local ca = r.contact_angles
 local area_error = c:area() / (2 * math.pi * R ^ 2) - 1
 print(("t = %g, %d steps, %.1f s: contact angles %.2f..%.2f (mean %.2f), area %.6f vs half "

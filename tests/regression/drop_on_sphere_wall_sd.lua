@@ -16,13 +16,9 @@ local T = require("froth.test")
 
 local R, r0 = 2, 0.7
 local c = froth.drop_on_sphere_wall{R = R, r = r0, h = 0.1}
-local wall = c:walls()[1]
-local pi = math.pi
-
 -- froth's volume: its lid is the patch of the sphere inside the rim (the sphere wall's own lid
 -- flux, Wall::fan_flux), so this is the volume between film and wall.
-local function true_volume() return c:volumes()[1] end
-local V0 = true_volume()
+local V0 = c:volumes()[1]
 
 local drift, reported, steps = 0, 0, 0
 local res = c:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-6, T = 0.5, progress = false,
@@ -34,39 +30,14 @@ local res = c:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-6, T = 0.5, progres
                        end
                      end}
 
--- The sphere |x - (0, 0, z0)| = a through the film by least squares: |x|^2 = 2 z0 x3 + k.
-local n, sz, ss, szz, szs = c:info().vertices, 0, 0, 0, 0
-for v = 1, n do
-  local x = c:vertex(v)
-  local s = x[1] ^ 2 + x[2] ^ 2 + x[3] ^ 2
-  sz, ss, szz, szs = sz + x[3], ss + s, szz + x[3] ^ 2, szs + x[3] * s
-end
-local z0 = (n * szs - sz * ss) / (n * szz - sz * sz) / 2
-local dist, sum, lo, hi = {}, 0, math.huge, -math.huge
-for v = 1, n do
-  local x = c:vertex(v)
-  local d = math.sqrt(x[1] ^ 2 + x[2] ^ 2 + (x[3] - z0) ^ 2)
-  sum, lo, hi = sum + d, math.min(lo, d), math.max(hi, d)
-end
-local a = sum / n
--- The radius of the orthogonal cap of volume V0: 4 pi a^3 / 3 less the lens shared with |x| <= R.
-local function cap_volume(b)
-  local d = math.sqrt(R * R + b * b)
-  local lens = pi * (R + b - d) ^ 2 * (d * d + 2 * d * b - 3 * b * b + 2 * d * R + 6 * b * R
-                                       - 3 * R * R) / (12 * d)
-  return 4 * pi * b ^ 3 / 3 - lens
-end
-local blo, bhi = 0.1, 2
-for _ = 1, 60 do
-  local m = (blo + bhi) / 2
-  if cap_volume(m) < V0 then blo = m else bhi = m end
-end
-local predicted = (blo + bhi) / 2
-local V1 = true_volume()
+local measure = require("froth.measure")
+local z0, a, lo, hi = measure.axial_sphere_fit(c)
+local predicted = measure.orthogonal_cap_radius(R, V0)
+local V1 = c:volumes()[1]
 local ca = res.contact_angles
 print(("t = %g, %d steps, %.1f s: max drift %.2e, contact angles %.2f..%.2f, fitted sphere "
        .. "radius %.5f (distances %+.2f%%..%+.2f%%), predicted %.5f (%+.2f%%), center %.5f vs "
-       .. "sqrt(R^2 + a^2) = %.5f, true volume %.6f -> %.6f (%+.3f%%), froth's volume loss %.2f%%")
+       .. "sqrt(R^2 + a^2) = %.5f, volume %.6f -> %.6f (%+.3f%%), froth's volume loss %.2f%%")
       :format(res.t, res.steps, res.wall_s, drift, ca.min, ca.max, a, 100 * (lo / a - 1),
               100 * (hi / a - 1), predicted, 100 * (a / predicted - 1), z0,
               math.sqrt(R * R + a * a), V0, V1, 100 * (V1 / V0 - 1), 100 * res.volume_loss))
