@@ -6,7 +6,8 @@ local M = {}
 
 local pi = math.pi
 local check = require("froth.options")
-local fail, options, number, boolean = check.fail, check.options, check.number, check.boolean
+local fail, options, number, boolean, choice =
+  check.fail, check.options, check.number, check.boolean, check.choice
 
 -- froth.fragment with its messages renamed ("fragment: ..." -> "torus_bubble: ...") so that
 -- errors name the builder the user called. h = nil asks fragment for about `vertices`.
@@ -28,15 +29,34 @@ local function torus_stretch(x, y, z)
   return x, y, z
 end
 
---- Torus bubble (unstable double bubble, seed §5.1.1): the ball |x| <= R fragmented with the
---- torus (R - sqrt(x^2 + y^2))^2 + z^2 <= r^2 about the z axis, whose tube is centered on the
---- sphere's equator. Body 1 = the ball (the "dumbbell"), body 2 = the torus outside the ball.
---- Surfaces: 1 = lower cap, 2 = upper cap (ball | outside), 3 = outer part of the torus
---- (torus | outside), 4 = the band of the sphere inside the torus (ball | torus).
+-- The torus bubble's solids for each layout; body 1 = the dumbbell, body 2 = the torus, and
+-- the surfaces come out as 1, 2 = lower, upper cap, 3 = outer torus, 4 = the wall between them.
+local function torus_bubble_solids(layout, R, r)
+  local torus = {"torus", R = R, r = r}
+  if layout == "ball" then return {{"ball", r = R}, torus} end
+  -- "halves": the torus comes first so that it keeps its whole tube; the dumbbell is the two
+  -- half balls standing on the circles z = +-r plus the cylinder between them, minus the tube.
+  torus.body = 2
+  return {torus,
+          {"ball", center = {0, 0, r}, r = R, latitude = {0, pi / 2}, body = 1},
+          {"ball", center = {0, 0, -r}, r = R, latitude = {-pi / 2, 0}, body = 1},
+          {"cylinder", base = {0, 0, -r}, axis = {0, 0, 2 * r}, r = R, body = 1}}
+end
+
+--- Torus bubble (unstable double bubble, seed §5.1.1), from the torus (R - sqrt(x^2 +
+--- y^2))^2 + z^2 <= r^2 about the z axis (5.2) and two half spheres of radius R; two layouts:
+---  "ball" (default): the ball |x| <= R fragmented with the torus, whose tube is centered on
+---   the sphere's equator. Body 1 = the ball (the "dumbbell"), body 2 = the torus outside it.
+---   Surfaces: 1 = lower cap, 2 = upper cap, 3 = outer part of the torus, 4 = the band of
+---   the sphere inside the torus (ball | torus).
+---  "halves": the half spheres stand on the torus's top and bottom circles (centers (0, 0,
+---   +-r)), so the films are exactly two half spheres and the torus surface. Body 1 = the
+---   dumbbell (half balls joined through the torus's hole), body 2 = the whole tube.
+---   Surfaces: 1, 2 = the half spheres, 3 = the outer half of the torus, 4 = its inner half.
 function M.torus_bubble(opts)
   local name = "torus_bubble"
   opts = options(name, opts, {R = true, r = true, h = true, vertices = true, stretch = true,
-                              sigma = true})
+                              sigma = true, layout = true})
   local R = number(name, opts, "R", 2)
   local r = number(name, opts, "r", 1)
   if not (R > 0 and R < math.huge) then fail(name, "R must be positive, got %s", R) end
@@ -44,8 +64,9 @@ function M.torus_bubble(opts)
     fail(name, "r must be in (0, R) = (0, %s), got %s", R, r)
   end
   local stretch = boolean(name, opts, "stretch", false)
+  local layout = choice(name, opts, "layout", {"ball", "halves"}, "ball")
   return fragment(name, {
-    solids = {{"ball", r = R}, {"torus", R = R, r = r}},
+    solids = torus_bubble_solids(layout, R, r),
     sigma = opts.sigma,
     transform = stretch and torus_stretch or nil,
   }, number(name, opts, "h", nil), number(name, opts, "vertices", stretch and 5300 or 4800))

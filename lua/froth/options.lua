@@ -44,4 +44,15 @@ function M.boolean(name, opts, key, default)
   return v
 end
 
+--- opts[key] as one of the strings in `choices` (an array), or default when absent.
+function M.choice(name, opts, key, choices, default)
+  local v = opts[key]
+  if v == nil then return default end
+  for _, c in ipairs(choices) do
+    if v == c then return v end
+  end
+  M.fail(name, "option '%s' must be \"%s\", got %s", key, table.concat(choices, "\" or \""),
+         type(v) == "string" and ("'" .. v .. "'") or type(v))
+end
+
 return M

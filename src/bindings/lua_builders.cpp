@@ -357,6 +357,7 @@ Solid read_solid(lua_State* L, int idx, int k) {
     read_rotate(L, o, s, who);
     read_scale(L, o, s, who);
     if (o.has("h")) s.h = o.number("h");
+    if (o.has("body")) s.body = o.integer("body"); // build_fragment checks the range
     o.finish();
     lua_pop(L, 1);
     return s;

@@ -44,6 +44,8 @@ struct Solid {
     double rotate_angle = 0;   ///< radians, right-handed about rotate_axis
     Vec3 scale = Vec3::Ones(); ///< factors along x, y, z, each > 0
     std::optional<double> h;   ///< target edge length on its body's films; none: global h
+    std::optional<long long> body; ///< 1-based id of the body its volume goes to (solids
+                                   ///< with one id form one body); for all solids or none
 };
 
 /// The solid's center: ball/torus center, box center, midpoint of the cylinder's axis.
@@ -60,15 +62,17 @@ struct FragmentOptions {
 };
 
 /// Builds the solids in gmsh, fragments them and meshes the films.
-///  - Body k is solid k minus the solids before it (a later solid never takes volume from an
-///    earlier one), so overlapping solids give one body each.
+///  - Solid k gets its volume minus that of the solids before it (a later solid never takes
+///    volume from an earlier one) and gives it to body k, or to body `body` when the solids
+///    carry body ids (then the solids of one id form one body: a union). Overlapping solids
+///    thus give one body each, and the order of the solids says who owns an overlap.
 ///  - Surfaces: one per connected film separating the same pair of regions (body ids, 0 = the
 ///    outside, including enclosed cavities), ordered by that pair (lower id first), ties by the
 ///    film's bounding box center compared z, then y, then x. gmsh surfaces split by seams or by
 ///    the interfaces between the parts of one body are merged and oriented consistently.
-///  - Bodies in the order of the solids; a body's surfaces are the films with its id.
-/// \throw InvalidInput for bad solids or options (naming "solids[k] (kind)", 1-based), a solid
-/// that lies inside earlier ones, a disconnected cluster, an h too small (estimated vertices
+///  - A body's surfaces are the films with its id.
+/// \throw InvalidInput for bad solids or options (naming "solids[k] (kind)", 1-based), body
+/// ids given for some solids only or not numbering the bodies 1..n, a solid that lies inside earlier ones, a disconnected cluster, an h too small (estimated vertices
 /// above max_vertices) or larger than the cluster; GeometryError if gmsh fails;
 /// TopologyError if a film cannot be oriented.
 ClusterSpec build_fragment(const FragmentOptions& options);

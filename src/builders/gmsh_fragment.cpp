@@ -119,10 +119,42 @@ void check_solid(const FragmentOptions& o, std::size_t k) {
     if (s.h) check_positive(who, "h", *s.h);
 }
 
+// Body ids given for all solids or none, and numbering the bodies 1..n without gaps.
+void check_body_ids(const FragmentOptions& o) {
+    const std::size_t n = o.solids.size();
+    std::vector<bool> used(n + 1, false);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::optional<long long> b = o.solids[k].body;
+        if (b.has_value() != o.solids[0].body.has_value())
+            throw InvalidInput(label(o, k) + (b ? " has" : " has no") + " body id, solids[1]" +
+                               (b ? " has none" : " has one") +
+                               ": give body to every solid or to none");
+        if (!b) continue;
+        if (*b < 1 || *b > static_cast<long long>(n))
+            throw InvalidInput(label(o, k) + ": body = " + std::to_string(*b) +
+                               " must be in 1.." + std::to_string(n) + " (one body per id)");
+        used[*b] = true;
+    }
+    if (!o.solids[0].body) return;
+    for (std::size_t b = 1; b <= n; ++b)
+        if (!used[b] && std::find(used.begin() + b, used.end(), true) != used.end())
+            throw InvalidInput(o.op + ": body ids must number the bodies 1..n: no solid has body " +
+                               std::to_string(b));
+}
+
+// Body ids (1-based) of the solids: their own `body`, else body k for solid k.
+std::vector<int> body_of_solids(const FragmentOptions& o) {
+    std::vector<int> body(o.solids.size());
+    for (std::size_t k = 0; k < o.solids.size(); ++k)
+        body[k] = static_cast<int>(o.solids[k].body.value_or(static_cast<long long>(k + 1)));
+    return body;
+}
+
 void check_options(const FragmentOptions& o) {
     if (o.solids.empty()) throw InvalidInput(o.op + ": no solids");
     for (std::size_t k = 0; k < o.solids.size(); ++k)
         check_solid(o, k);
+    check_body_ids(o);
     if (o.h) check_positive(o.op, "h", *o.h);
     check_positive(o.op, "sigma", o.sigma);
     for (auto [id, sigma] : o.sigma_of) {
@@ -174,10 +206,11 @@ int add_solid(const Solid& s) {
     return tag;
 }
 
-// Fragments the solids and gives each piece to the first solid containing it: body k is then
+// Fragments the solids and gives each piece to the first solid containing it: solid k gets
 // solid k minus solids 1..k-1. One general fuse instead of a chain of cuts keeps every
-// interface conforming. Returns the volume tags of each body.
-std::vector<std::vector<int>> body_pieces(const FragmentOptions& o, const std::vector<int>& tags) {
+// interface conforming. Returns the volume tags of each solid.
+std::vector<std::vector<int>> solid_pieces(const FragmentOptions& o,
+                                           const std::vector<int>& tags) {
     if (tags.size() == 1) return {{tags[0]}};
     gmsh::vectorpair objects{{3, tags[0]}}, tools, out;
     for (std::size_t k = 1; k < tags.size(); ++k)
@@ -192,8 +225,9 @@ std::vector<std::vector<int>> body_pieces(const FragmentOptions& o, const std::v
         for (auto [dim, tag] : map[k])
             if (dim == 3 && taken.insert(tag).second) pieces[k].push_back(tag);
         if (pieces[k].empty())
-            throw InvalidInput(label(o, k) +
-                               " lies inside the solids before it: its body would be empty");
+            throw InvalidInput(label(o, k) + " lies inside the solids before it: " +
+                               (o.solids[k].body ? "it adds nothing to its body"
+                                                 : "its body would be empty"));
     }
     return pieces;
 }
@@ -276,14 +310,18 @@ std::vector<Film> group_films(const Surfaces& surfaces) {
 
 // A cluster must be one connected set of bodies: say which solid is cut off.
 void check_connected(const FragmentOptions& o, const std::vector<Film>& films) {
-    const int n = static_cast<int>(o.solids.size());
+    const std::vector<int> body = body_of_solids(o);
+    const int n = *std::max_element(body.begin(), body.end());
     if (n < 2) return;
+    std::vector<std::size_t> first_solid(n + 1); // names body k in messages
+    for (std::size_t k = o.solids.size(); k-- > 0;)
+        first_solid[body[k]] = k;
     std::vector<std::vector<int>> next(n + 1);
     for (const Film& f : films)
         if (f.a > 0) next[f.a].push_back(f.b), next[f.b].push_back(f.a);
     for (int k = 1; k <= n; ++k)
         if (next[k].empty())
-            throw InvalidInput(label(o, k - 1) +
+            throw InvalidInput(label(o, first_solid[k]) +
                                " touches no other solid: a cluster must be connected");
     std::vector<bool> seen(n + 1, false);
     std::vector<int> stack{1};
@@ -296,8 +334,8 @@ void check_connected(const FragmentOptions& o, const std::vector<Film>& films) {
     }
     for (int k = 2; k <= n; ++k)
         if (!seen[k])
-            throw InvalidInput(label(o, k - 1) + " is not connected to solids[1]: a cluster " +
-                               "must be connected");
+            throw InvalidInput(label(o, first_solid[k]) + " is not connected to solids[1]: a " +
+                               "cluster must be connected");
 }
 
 /// Target edge lengths: per body (local h or the global one) and so per gmsh entity.
@@ -361,14 +399,15 @@ Sizing plan_sizes(const FragmentOptions& o, const Surfaces& surfaces, double h) 
     if (z.h > extent)
         throw InvalidInput(o.op + ": h = " + num(z.h) + " is larger than the cluster (extent " +
                            num(extent) + "); use h <= " + num(extent));
-    z.body_h.assign(o.solids.size() + 1, kInf);
-    for (std::size_t k = 0; k < o.solids.size(); ++k) {
+    const std::vector<int> body = body_of_solids(o);
+    z.body_h.assign(*std::max_element(body.begin(), body.end()) + 1, kInf);
+    for (std::size_t k = 0; k < o.solids.size(); ++k) { // a union: its solids' finest h
         const std::optional<double> hk = o.solids[k].h;
         if (hk && *hk > extent)
             throw InvalidInput(label(o, k) + ": h = " + num(*hk) +
                                " is larger than the cluster (extent " + num(extent) + ")");
         z.local = z.local || hk;
-        z.body_h[k + 1] = hk.value_or(z.h);
+        z.body_h[body[k]] = std::min(z.body_h[body[k]], hk.value_or(z.h));
     }
     size_entities(z, surfaces);
     z.largest = z.h;
@@ -462,12 +501,13 @@ ClusterSpec build_fragment(const FragmentOptions& o) {
         std::vector<int> tags;
         for (const Solid& s : o.solids)
             tags.push_back(add_solid(s));
-        const std::vector<std::vector<int>> pieces = body_pieces(o, tags);
+        const std::vector<std::vector<int>> pieces = solid_pieces(o, tags);
         occ::synchronize();
+        const std::vector<int> body = body_of_solids(o);
         std::unordered_map<int, int> body_of_volume;
         for (std::size_t k = 0; k < pieces.size(); ++k)
             for (int v : pieces[k])
-                body_of_volume[v] = static_cast<int>(k + 1);
+                body_of_volume[v] = body[k];
         const Surfaces surfaces = classify_surfaces(body_of_volume);
         const std::vector<Film> films = group_films(surfaces);
         check_connected(o, films);
@@ -484,7 +524,8 @@ ClusterSpec build_fragment(const FragmentOptions& o) {
                           surfaces);
             }
         }
-        return extract(plans, body_films(o.solids.size(), films), o.op);
+        const auto bodies = static_cast<std::size_t>(*std::max_element(body.begin(), body.end()));
+        return extract(plans, body_films(bodies, films), o.op);
     });
 }
 

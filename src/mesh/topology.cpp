@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
 
 namespace froth {
@@ -42,6 +44,45 @@ std::string edge_name(int a, int b) {
 }
 
 double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)) / 6.0; }
+
+// Solid angle of the triangle abc seen from p, signed by the triangle's orientation (Van
+// Oosterom and Strackee 1983): summed over a closed outward surface it is 4 pi inside, 0 outside.
+double solid_angle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 x = a - p, y = b - p, z = c - p;
+    const double lx = x.norm(), ly = y.norm(), lz = z.norm();
+    return 2 * std::atan2(x.dot(y.cross(z)),
+                          lx * ly * lz + x.dot(y) * lz + y.dot(z) * lx + z.dot(x) * ly);
+}
+
+// The surfaces of one body as shells: sets of surfaces joined by shared edges (component[s]),
+// each consistently signed on its own. A body around a cavity (a bubble in a bubble) has
+// several; a shell inside an odd number of the others bounds a cavity and must face into it.
+// Turns every shell outward, then flips those at odd depth.
+void orient_shells(const std::vector<Surface>& surfaces, const std::vector<Vec3>& X,
+                   std::map<int, int>& sign, const std::map<int, int>& component, int shells) {
+    std::vector<double> volume(shells, 0.0);
+    std::vector<Vec3> probe(shells); // a facet centroid of each shell: on no other shell
+    for (auto [s, sg] : sign)
+        for (const Tri& t : surfaces[s].triangles) {
+            volume[component.at(s)] += sg * cone_volume(X[t[0]], X[t[1]], X[t[2]]);
+            probe[component.at(s)] = (X[t[0]] + X[t[1]] + X[t[2]]) / 3;
+        }
+    std::vector<int> outward(shells); // the sign that turns each shell outward
+    for (int c = 0; c < shells; ++c)
+        outward[c] = volume[c] < 0 ? -1 : 1;
+    std::vector<int> depth(shells, 0);
+    for (int c = 0; c < shells; ++c) {
+        std::vector<double> angle(shells, 0.0);
+        for (auto [s, sg] : sign)
+            for (const Tri& t : surfaces[s].triangles)
+                angle[component.at(s)] +=
+                    sg * outward[component.at(s)] * solid_angle(probe[c], X[t[0]], X[t[1]], X[t[2]]);
+        for (int d = 0; d < shells; ++d)
+            if (d != c && angle[d] > 2 * std::numbers::pi) ++depth[c]; // winding number 1
+    }
+    for (auto& [s, sg] : sign)
+        sg *= outward[component.at(s)] * (depth[component.at(s)] % 2 ? -1 : 1);
+}
 
 } // namespace
 
@@ -164,16 +205,23 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
             i = j;
         }
         // Propagate: across a shared edge the two signed facets must traverse it oppositely.
+        std::map<int, int> shell; // surface -> the shell (set of edge-joined surfaces) it is in
+        int shells = 0;
         for (auto& [s, sg] : sign) {
             if (sg != 0) continue;
             sg = 1;
+            shell[s] = shells++;
             for (bool changed = true; changed;) {
                 changed = false;
                 for (auto [p, q] : links) {
                     int& sp = sign[p->surface];
                     int& sq = sign[q->surface];
-                    if (sp != 0 && sq == 0) sq = -sp * p->dir * q->dir, changed = true;
-                    if (sq != 0 && sp == 0) sp = -sq * p->dir * q->dir, changed = true;
+                    if (sp != 0 && sq == 0)
+                        sq = -sp * p->dir * q->dir, shell[q->surface] = shell[p->surface],
+                        changed = true;
+                    if (sq != 0 && sp == 0)
+                        sp = -sq * p->dir * q->dir, shell[p->surface] = shell[q->surface],
+                        changed = true;
                     if (sp != 0 && sq != 0 && sp * p->dir == sq * q->dir)
                         throw TopologyError("cluster: " + name + " cannot be oriented: its "
                                             "surfaces " + std::to_string(p->surface + 1) + " and " +
@@ -182,6 +230,7 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
                 }
             }
         }
+        if (shells > 1 && walls_.empty()) orient_shells(surfaces_, X_, sign, shell, shells);
         Body body;
         double volume = 0;
         for (auto [s, sg] : sign) {

@@ -145,6 +145,39 @@ T.assert_equal(open, 10, "ten open two-vertex triple lines")
 T.assert_equal(q:report().angles, nil, "no angles where every line vertex is a quadruple point")
 for k, v in ipairs(q:volumes()) do T.assert_near(v, 2 / 3, 1e-14, "cell " .. k .. " volume") end
 
+-- Nested shells: a cube of side 1 inside a cube of side 2 (a bubble in a bubble). Body 1 = the
+-- inner cube, body 2 = the shell between them, bounded by both surfaces; froth orients each
+-- shell on its own and the inner one into the cavity: volumes 1 and 8 - 1 = 7, exactly.
+local function cube(offset, side, first)
+  local verts, tris = {}, {}
+  for k = 0, 7 do
+    verts[k + 1] = {offset + side * (k & 1), offset + side * ((k >> 1) & 1),
+                    offset + side * ((k >> 2) & 1)}
+  end
+  for _, q in ipairs({{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2},
+                      {1, 3, 7, 5}}) do -- faces, each outward
+    tris[#tris + 1] = {first + q[1], first + q[2], first + q[3]}
+    tris[#tris + 1] = {first + q[1], first + q[3], first + q[4]}
+  end
+  return verts, tris
+end
+local outer_v, outer_t = cube(-1, 2, 1)
+local inner_v, inner_t = cube(-0.5, 1, 9)
+for _, x in ipairs(inner_v) do outer_v[#outer_v + 1] = x end
+for _, flip in ipairs({false, true}) do -- either orientation of the inner surface as given
+  local t = inner_t
+  if flip then
+    t = {}
+    for i, f in ipairs(inner_t) do t[i] = {f[1], f[3], f[2]} end
+  end
+  local nest = froth.cluster{vertices = outer_v, surfaces = {outer_t, t}, bodies = {{2}, {1, 2}}}
+  T.assert_near(nest:volumes()[1], 1, 1e-14, "nested cubes: the inner body")
+  T.assert_near(nest:volumes()[2], 7, 1e-14, "nested cubes: the shell is 8 - 1")
+  local b = nest:bodies()
+  T.assert_true(b[1][1] == -b[2][2], "the inner surface faces out of body 1, into the shell",
+                b[1][1] .. " " .. b[2][2])
+end
+
 -- Errors of the methods, with the cluster unchanged.
 T.check_error("surface 4 does not exist (the cluster has surfaces 1..3)", c.sigma, c, 4)
 T.check_error("surface 0 does not exist", c.area, c, 0)

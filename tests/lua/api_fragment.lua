@@ -104,6 +104,29 @@ local quad = froth.fragment{solids = {{"box", min = {0, 0, 0}, size = {2, 1, 1}}
                                       {"box", min = {0, 0, 2}, size = {2, 1, 1}}}, h = 0.2}
 T.assert_equal(counts(quad), "9/8/4/4", "quadruple bubble of boxes")
 
+-- body ids: solids with one id form one body (a union), the order of the solids still decides
+-- who owns an overlap. A capsule (two half balls on a cylinder: one body, one film, its
+-- internal disks dropped), then the same capsule after a ball inside it, listed first: the
+-- ball keeps its volume (as body 2), body 1 = the capsule minus the ball.
+local function capsule_parts(body)
+  return {{"ball", center = {0, 0, 0.5}, r = 1, latitude = {0, pi / 2}, body = body},
+          {"ball", center = {0, 0, -0.5}, r = 1, latitude = {-pi / 2, 0}, body = body},
+          {"cylinder", base = {0, 0, -0.5}, axis = {0, 0, 1}, r = 1, body = body}}
+end
+local capsule = froth.fragment{solids = capsule_parts(1), h = 0.1}
+T.assert_equal(counts(capsule), "1/0/0/1", "a capsule from three solids: one film, one body")
+local capsule_volume = 4 * pi / 3 + pi
+T.assert_true(rel(capsule:volumes()[1], capsule_volume) < 0.01, "capsule: 4 pi/3 + pi",
+              capsule:volumes()[1])
+local parts = capsule_parts(1)
+table.insert(parts, 1, {"ball", r = 0.5, body = 2})
+local hollow = froth.fragment{solids = parts, h = 0.1}
+T.assert_equal(counts(hollow), "2/0/0/2", "a ball inside the capsule, listed first")
+T.assert_true(rel(hollow:volumes()[2], pi / 6) < 0.02, "the ball listed first keeps its volume",
+              hollow:volumes()[2])
+T.assert_true(rel(hollow:volumes()[1], capsule_volume - pi / 6) < 0.01,
+              "body 1 = the capsule minus the ball", hollow:volumes()[1])
+
 -- h on one solid refines the films of its body only.
 local coarse = froth.fragment{solids = {{"ball", r = 1}, {"ball", center = {1.5, 0, 0}, r = 1}}, h = 0.2}
 local fine = froth.fragment{solids = {{"ball", r = 1}, {"ball", center = {1.5, 0, 0}, r = 1, h = 0.08}},
@@ -177,6 +200,19 @@ bad("fragment: solids[1] (box): unknown option 'latitude'",
     {solids = {{"box", min = {0, 0, 0}, size = {1, 1, 1}, latitude = {0, 1}}}})
 bad("fragment: solids[2] (ball) lies inside the solids before it: its body would be empty",
     {solids = {B, {"ball", r = 0.5}}, h = 0.3})
+bad("fragment: solids[2] (ball) has no body id, solids[1] has one: give body to every solid or to none",
+    {solids = {{"ball", r = 1, body = 1}, {"ball", center = {1, 0, 0}, r = 1}}, h = 0.3})
+bad("fragment: solids[2] (ball) has body id, solids[1] has none: give body to every solid or to none",
+    {solids = {B, {"ball", center = {1, 0, 0}, r = 1, body = 1}}, h = 0.3})
+bad("fragment: solids[2] (ball): body = 3 must be in 1..2 (one body per id)",
+    {solids = {{"ball", r = 1, body = 1}, {"ball", center = {1, 0, 0}, r = 1, body = 3}}, h = 0.3})
+bad("fragment: solids[1] (ball): body = 0 must be in 1..2 (one body per id)",
+    {solids = {{"ball", r = 1, body = 0}, {"ball", center = {1, 0, 0}, r = 1, body = 1}}, h = 0.3})
+bad("fragment: body ids must number the bodies 1..n: no solid has body 1",
+    {solids = {{"ball", r = 1, body = 2}, {"ball", center = {1, 0, 0}, r = 1, body = 2}}, h = 0.3})
+bad("fragment: solids[1] (ball): option 'body' must be an integer", {solids = {{"ball", r = 1, body = 1.5}}})
+bad("fragment: solids[2] (ball) lies inside the solids before it: it adds nothing to its body",
+    {solids = {{"ball", r = 1, body = 1}, {"ball", r = 0.5, body = 1}}, h = 0.3})
 bad("fragment: solids[3] (ball) touches no other solid: a cluster must be connected",
     {solids = {B, {"ball", center = {1, 0, 0}, r = 1}, {"ball", center = {5, 0, 0}, r = 1}}, h = 0.3})
 bad("fragment: solids[3] (ball) is not connected to solids[1]: a cluster must be connected",

@@ -46,6 +46,32 @@ local w = small:volumes()
 T.assert_true(rel(w[2] / w[1], 0.170638) < 0.01, "r = 0.5: torus/ball = 0.1706", w[2] / w[1])
 T.assert_equal(counts(small), "4/2/0/2", "r = 0.5: counts")
 
+-- layout = "halves": the two half spheres of radius 2 stand on the torus's top and bottom
+-- circles (z = +-1, rho = 2), the torus body is the whole tube. Exact volumes: torus
+-- 2 pi^2 R r^2 = 4 pi^2, dumbbell 4/3 pi R^3 + pi (2 r R^2 - pi R r^2 + 4/3 r^3) = 43.092756.
+local halves = froth.torus_bubble{layout = "halves", h = 0.25}
+T.assert_equal(counts(halves), "4/2/0/2", "halves: surfaces/lines/points/bodies")
+local hv = halves:volumes()
+T.assert_true(rel(hv[1], 32 * pi / 3 + pi * (8 - 2 * pi + 4 / 3)) < 0.01, "halves: the dumbbell",
+              hv[1])
+T.assert_true(rel(hv[2], 4 * pi ^ 2) < 0.01, "halves: body 2 is the whole tube", hv[2])
+T.assert_equal(body(halves, 1), "1 2 4", "halves: dumbbell = caps 1, 2 and the inner wall 4")
+T.assert_equal(body(halves, 2), "3 4", "halves: torus = its outer half 3 and inner half 4")
+local off_circle = 0
+for _, l in ipairs(halves:triple_lines()) do
+  for _, v in ipairs(l.vertices) do
+    local x = halves:vertex(v)
+    off_circle = math.max(off_circle, math.abs(math.sqrt(x[1] ^ 2 + x[2] ^ 2) - 2),
+                          math.abs(math.abs(x[3]) - 1))
+  end
+end
+T.assert_true(off_circle < 1e-9, "halves: the triple lines are the circles rho = 2, z = +-1",
+              off_circle)
+-- stretched with r = 0.5: torus/dumbbell 0.283648 (quadrature of the stretched volumes)
+local hs = froth.torus_bubble{layout = "halves", r = 0.5, stretch = true, h = 0.1}
+T.assert_true(rel(hs:volumes()[2] / hs:volumes()[1], 0.283648) < 0.01,
+              "halves, stretched: torus/dumbbell = 0.2836", hs:volumes()[2] / hs:volumes()[1])
+
 -- stretch = true: the seed's G_1 (x < 0: x e^{-0.2 x}) and G_2 (y < 0: y e^{-0.1 y}) on the
 -- mesh vertices; about 5300 vertices (seed K = 5314). Exact ratio 0.211214 (quadrature; the
 -- seed reports 0.25).
@@ -114,6 +140,8 @@ T.check_error("torus_bubble: r must be in (0, R) = (0, 2), got 2", froth.torus_b
 T.check_error("torus_bubble: r must be in (0, R) = (0, 2), got 0", froth.torus_bubble, {r = 0})
 T.check_error("torus_bubble: R must be positive, got -1", froth.torus_bubble, {R = -1})
 T.check_error("torus_bubble: option 'stretch' must be true or false", froth.torus_bubble, {stretch = 1})
+T.check_error("torus_bubble: option 'layout' must be \"ball\" or \"halves\", got 'half'",
+              froth.torus_bubble, {layout = "half"})
 T.check_error("torus_bubble: option 'r' must be a number", froth.torus_bubble, {r = "1"})
 T.check_error("torus_bubble: unknown option 'radius'", froth.torus_bubble, {radius = 1})
 T.check_error("torus_bubble: h = 0.001 gives about", froth.torus_bubble, {h = 0.001})
