@@ -72,11 +72,12 @@ void orient_shells(const std::vector<Surface>& surfaces, const std::vector<Vec3>
         outward[c] = volume[c] < 0 ? -1 : 1;
     std::vector<int> depth(shells, 0);
     for (int c = 0; c < shells; ++c) {
-        std::vector<double> angle(shells, 0.0);
-        for (auto [s, sg] : sign)
+        std::vector<double> angle(shells, 0.0); // of each shell, turned outward, seen from c
+        for (auto [s, sg] : sign) {
+            const int d = component.at(s);
             for (const Tri& t : surfaces[s].triangles)
-                angle[component.at(s)] +=
-                    sg * outward[component.at(s)] * solid_angle(probe[c], X[t[0]], X[t[1]], X[t[2]]);
+                angle[d] += sg * outward[d] * solid_angle(probe[c], X[t[0]], X[t[1]], X[t[2]]);
+        }
         for (int d = 0; d < shells; ++d)
             if (d != c && angle[d] > 2 * std::numbers::pi) ++depth[c]; // winding number 1
     }
@@ -230,6 +231,7 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
                 }
             }
         }
+        // (With walls a shell may be open, closed by lids: no winding number; left as signed.)
         if (shells > 1 && walls_.empty()) orient_shells(surfaces_, X_, sign, shell, shells);
         Body body;
         double volume = 0;
