@@ -72,9 +72,10 @@ struct FragmentOptions {
 ///    the interfaces between the parts of one body are merged and oriented consistently.
 ///  - A body's surfaces are the films with its id.
 /// \throw InvalidInput for bad solids or options (naming "solids[k] (kind)", 1-based), body
-/// ids given for some solids only or not numbering the bodies 1..n, a solid that lies inside earlier ones, a disconnected cluster, an h too small (estimated vertices
-/// above max_vertices) or larger than the cluster; GeometryError if gmsh fails;
-/// TopologyError if a film cannot be oriented.
+/// ids given for some solids only or not numbering the bodies 1..n, a solid that lies inside
+/// earlier ones, a disconnected cluster, an h too small (estimated vertices above
+/// max_vertices) or larger than the cluster; GeometryError if gmsh fails; TopologyError if a
+/// film cannot be oriented.
 ClusterSpec build_fragment(const FragmentOptions& options);
 
 } // namespace froth
