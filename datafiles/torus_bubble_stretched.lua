@@ -14,7 +14,9 @@
 --            azimuth ~115 degrees and the run stops at t = 0.634 (5300 vertices; 0.637 with
 --            10000), its z-thickness there 0.13 of initially 1.
 -- Neither reaches the seed's 0.91: both rings tear where G1 and G2 stretch them lengthwise,
--- the thinner crescent first. Surface diffusion's time scale itself is checked exactly
+-- the thinner crescent first. The stretching sets the time: unstretched (h = 0.17) the rings
+-- tear only at t = 1.44 ("ball") and 2.58 ("halves"); with "halves" and r = 0.45 (torus/
+-- dumbbell 0.228) at t = 0.47. Surface diffusion's time scale itself is checked exactly
 -- (tests/regression/sphere_sd_mode_decay.lua), so the difference is the seed's initial
 -- cluster, which its text does not pin down.
 --
