@@ -15,10 +15,6 @@
 namespace froth {
 namespace {
 
-std::string point_text(const Vec3& x) {
-    return "(" + fmt(x.x()) + ", " + fmt(x.y()) + ", " + fmt(x.z()) + ")";
-}
-
 std::string vertex_text(int v, const Vec3& x) {
     return "vertex " + std::to_string(v + 1) + " " + point_text(x);
 }

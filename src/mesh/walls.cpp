@@ -8,10 +8,6 @@
 namespace froth {
 namespace {
 
-std::string point_text(const Vec3& x) {
-    return "(" + fmt(x.x()) + ", " + fmt(x.y()) + ", " + fmt(x.z()) + ")";
-}
-
 Vec3 unit_vector(const Vec3& v, const std::string& who, const char* what) {
     const double n = v.norm();
     if (!(std::isfinite(n) && n > 0))
@@ -217,6 +213,16 @@ WallPtr make_function_wall(std::function<double(const Vec3&)> F,
                            fmt(fd_step));
     return std::make_shared<FunctionWall>(std::move(F), std::move(gradient), std::move(name),
                                           fd_step);
+}
+
+std::string point_text(const Vec3& x) {
+    std::string text = "("; // appended, not "(" + ...: GCC 12 warns falsely (-Wrestrict) there
+    text += fmt(x.x());
+    text += ", ";
+    text += fmt(x.y());
+    text += ", ";
+    text += fmt(x.z());
+    return text + ")";
 }
 
 } // namespace froth

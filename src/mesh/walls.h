@@ -61,4 +61,7 @@ WallPtr make_function_wall(std::function<double(const Vec3&)> F,
                            std::function<Vec3(const Vec3&)> gradient, std::string name,
                            double fd_step = 1e-6);
 
+/// "(x, y, z)" with %.6g numbers, for wall descriptions and error messages.
+std::string point_text(const Vec3& x);
+
 } // namespace froth
