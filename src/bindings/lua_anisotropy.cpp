@@ -20,18 +20,7 @@ const Anisotropy& self(lua_State* L) { return check<AnisotropyHandle>(L, 1, kAni
 
 /// Reads {x, y, z} (a table) or three numbers starting at idx.
 Vector3d read_vector(lua_State* L, int idx) {
-    Vector3d x;
-    if (lua_istable(L, idx)) {
-        for (int d = 0; d < 3; ++d) {
-            if (lua_rawgeti(L, idx, d + 1) != LUA_TNUMBER)
-                luaL_error(L, "anisotropy: expected a vector {x, y, z}");
-            x[d] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-    } else {
-        for (int d = 0; d < 3; ++d) x[d] = luaL_checknumber(L, idx + d);
-    }
-    return x;
+    return read_xyz(L, idx, "anisotropy: expected a vector {x, y, z}");
 }
 
 /// The number at t[i] (1-based), or an error naming `what`.

@@ -21,18 +21,7 @@ WallPtr& self_ptr(lua_State* L, int idx = 1) {
 
 /// Reads {x, y, z} (a table) or three numbers starting at idx.
 Vec3 read_point(lua_State* L, int idx) {
-    Vec3 x;
-    if (lua_istable(L, idx)) {
-        for (int d = 0; d < 3; ++d) {
-            if (lua_rawgeti(L, idx, d + 1) != LUA_TNUMBER)
-                luaL_error(L, "expected a point {x, y, z}");
-            x[d] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-    } else {
-        for (int d = 0; d < 3; ++d) x[d] = luaL_checknumber(L, idx + d);
-    }
-    return x;
+    return read_xyz(L, idx, "expected a point {x, y, z}");
 }
 
 Vec3 vector_option(lua_State* L, Options& o, const char* key, const Vec3& fallback) {

@@ -8,6 +8,21 @@
 
 namespace froth::lua {
 
+Eigen::Vector3d read_xyz(lua_State* L, int idx, const char* message) {
+    Eigen::Vector3d x;
+    if (lua_istable(L, idx)) {
+        for (int d = 0; d < 3; ++d) {
+            if (lua_rawgeti(L, idx, d + 1) != LUA_TNUMBER) luaL_error(L, "%s", message);
+            x[d] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+    } else {
+        for (int d = 0; d < 3; ++d)
+            x[d] = luaL_checknumber(L, idx + d);
+    }
+    return x;
+}
+
 int check_id(lua_State* L, int idx, int n, const char* kind, const char* kinds) {
     const lua_Integer i = luaL_checkinteger(L, idx);
     if (i < 1 || i > n)

@@ -6,6 +6,8 @@
 
 #include <lua.hpp>
 
+#include <Eigen/Core>
+
 #include <cstdio>
 #include <memory>
 #include <new>
@@ -122,6 +124,10 @@ void register_type(lua_State* L, const char* type_name, const luaL_Reg* methods,
 /// Checks that argument idx is an integer id in 1..n and returns it 0-based; the message
 /// names the kind ("surface 7 does not exist (the cluster has surfaces 1..3)").
 int check_id(lua_State* L, int idx, int n, const char* kind, const char* kinds);
+
+/// Reads {x, y, z} (a table of three numbers) or three numbers starting at idx; a table with a
+/// missing or non-number entry raises `message` (e.g. "expected a point {x, y, z}").
+Eigen::Vector3d read_xyz(lua_State* L, int idx, const char* message);
 
 inline void set_number(lua_State* L, const char* key, double value) {
     lua_pushnumber(L, value);
