@@ -94,5 +94,8 @@ for _, case in ipairs(cases) do
     local dev, scale = measure.wulff_deviation(c, c:anisotropy(1) or A.isotropic(1), {half = true})
     print(("  distance to the scaled half Wulff shape (r = %.4f): max |gamma*(X)/r - 1| = %.2e")
           :format(scale, dev))
+    local contact = c:report().contact_angles
+    print(("  wall: residual of the contact condition (1.26b) %.3f, contact angles %.1f..%.1f")
+          :format(contact.force_imbalance, contact.min, contact.max))
   end
 end

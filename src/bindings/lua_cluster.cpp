@@ -441,12 +441,13 @@ void push_report(lua_State* L, const Report& r) {
     set_number(L, "min_area", r.mesh.min_area);
     lua_setfield(L, -2, "mesh");
     if (r.contact_angles.count > 0) {
-        lua_createtable(L, 0, 5);
+        lua_createtable(L, 0, 6);
         set_number(L, "min", r.contact_angles.min);
         set_number(L, "max", r.contact_angles.max);
         set_number(L, "mean", r.contact_angles.mean);
         set_integer(L, "count", r.contact_angles.count);
         set_number(L, "max_deviation", r.contact_angles.young_error);
+        set_number(L, "force_imbalance", r.contact_angles.force_imbalance);
         lua_setfield(L, -2, "contact_angles");
         set_number(L, "wall_drift", r.wall_drift);
     }

@@ -45,7 +45,8 @@ struct AngleStats {
     /// (force balance sum_j sigma_j mu_j = 0); NaN if some tensions admit no balance.
     /// Isotropic only: with anisotropies use force_imbalance.
     double young_error = 0;
-    /// Film angles only: the largest relative force imbalance of (2.3), the anisotropic
+    /// Contact angles: the largest relative residual of (1.26b), see contact_angles.
+    /// Film angles: the largest relative force imbalance of (2.3), the anisotropic
     /// (Cahn–Hoffmann, Herring) force balance sum_j Pi_T gamma_j'(nu_j) = 0 with gamma_j =
     /// sigma_j gamma_j and the normals nu_j = t x mu_j consistently oriented:
     /// |sum_j Pi_T gamma_j'(nu_j)| / sum_j |Pi_T gamma_j'(nu_j)| over the line vertices, with
@@ -68,7 +69,9 @@ AngleStats quadruple_point_angles(const Cluster& c);
 /// normal and the wall's normal grad F / |grad F|, 90 degrees where the film meets the wall
 /// perpendicularly (the isotropic equilibrium, (1.26b)). The film normal at the wall comes from
 /// the same quadratic fit as the film angles (second order in h). count = 0 without walls;
-/// young_error = max |angle - 90|.
+/// young_error = max |angle - 90|; force_imbalance = max |n . gamma'(nu)| / |gamma'(nu)|, the
+/// relative residual of the anisotropic contact condition (1.26b) (gamma' = nu for isotropic
+/// films: |cos angle|).
 AngleStats contact_angles(const Cluster& c);
 
 /// max over wall-attached vertices of the distance |F| / |grad F| to their walls: how far the

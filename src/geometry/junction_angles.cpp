@@ -264,10 +264,16 @@ AngleStats contact_angles(const Cluster& c) {
             const bool creased = facet_normal[at[k][0]].normalized().dot(
                                      facet_normal[at[k][1]].normalized()) < std::cos(M_PI / 6);
             if (creased || nu.dot(chord_normal) < std::cos(kCreaseAngle)) nu = chord_normal;
+            // (1.26b): n . gamma'(nu) = 0; gamma' is odd, so nu's sign does not enter
+            const Surface& surface = c.surface(s);
+            const Vec3 g = surface.gamma ? Vec3(surface.gamma->gamma_prime(nu)) : nu;
             for (int w : c.vertex_walls(v)) {
-                const double angle = angle_between(nu, c.walls()[w]->normal(c.position(v)));
+                const Vec3 n = c.walls()[w]->normal(c.position(v));
+                const double angle = angle_between(nu, n);
                 acc.add(angle);
                 acc.stats.young_error = std::max(acc.stats.young_error, std::abs(angle - 90));
+                acc.stats.force_imbalance =
+                    std::max(acc.stats.force_imbalance, std::abs(n.dot(g)) / g.norm());
             }
         }
     return acc.finish();

@@ -284,6 +284,14 @@ if froth.has("gmsh") then
   near(fc:volumes()[1], 1, 1e-12, "fragment cube on the floor: volume 1 with its lid")
   near(fc:area(), 5, 1e-12, "fragment cube on the floor: the bottom is gone")
   yes(fc:report().contact_angles ~= nil, "fragment cube on the floor: contact angles")
+  -- Sheared by x += z / 2, its side films meet the floor at 90 -+ atan(1/2) degrees; for an
+  -- isotropic film the residual of (1.26b), |n . nu|, is the sine of the deviation from 90.
+  local sheared = froth.fragment{solids = {cube}, h = 0.25, walls = froth.plane(),
+                                 transform = function(x, y, z) return x + z / 2, y, z end}
+  local sca = sheared:report().contact_angles
+  near(sca.min, 90 - math.deg(math.atan(0.5)), 1e-9, "sheared cube: smallest contact angle")
+  near(sca.max, 90 + math.deg(math.atan(0.5)), 1e-9, "sheared cube: largest contact angle")
+  near(sca.force_imbalance, math.sin(math.atan(0.5)), 1e-12, "sheared cube: |n . nu| = 1/sqrt(5)")
   check_error("fragment: sigma names surface 2, but there are 1 films once the lids on the walls "
               .. "are dropped", froth.fragment,
               {solids = {cube}, h = 0.5, walls = froth.plane(), sigma = {[2] = 3}})
