@@ -69,13 +69,12 @@ for _, case in ipairs(cases) do
   local info = c:info()
   print(("%s: %s, %d vertices, %d facets"):format(case, what, info.vertices, info.facets))
   local worst, iterations = 0, 0
-  local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = 1e-7,
-                     T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
-                     output = (opts.output ~= "" and not opts.smoke) and opts.output or nil,
-                     on_step = function(s)
-                       worst = math.max(worst, (s.energy - s.energy_before) / s.energy_before)
-                       iterations = math.max(iterations, s.fixed_point_iterations)
-                     end}
+  local r = c:evolve(script.evolve_options(opts, {
+    flow = "sd", tau = opts.tau, tau_start = 1e-7,
+    on_step = function(s)
+      worst = math.max(worst, (s.energy - s.energy_before) / s.energy_before)
+      iterations = math.max(iterations, s.fixed_point_iterations)
+    end}))
   print(("  t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))
   print(("  energy %.6f, largest relative energy increase of a step %.2e (Theorem 3.2: <= 0)")
         :format(r.energy, worst))

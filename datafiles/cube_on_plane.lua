@@ -21,11 +21,10 @@ print(("cube on the plane x3 = 0: %d vertices, %d facets (seed: K = 5185, J = 10
       :format(info.vertices, info.facets))
 
 local drift = 0
-local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start, -- ramp: box edges
-                   T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
-                   every = opts.every,
-                   output = (opts.output ~= "" and not opts.smoke) and opts.output or nil,
-                   on_step = function(s) drift = math.max(drift, s.wall_drift) end}
+-- tau_start: a ramp, for the box's edges
+local r = c:evolve(script.evolve_options(opts, {
+  flow = "sd", tau = opts.tau, tau_start = opts.tau_start, every = opts.every,
+  on_step = function(s) drift = math.max(drift, s.wall_drift) end}))
 
 -- The half sphere of the same volume V = 2 pi R^3 / 3 has the film area 2 pi R^2.
 local R, lo, hi = require("froth.measure").half_sphere_fit(c)

@@ -31,11 +31,9 @@ local function neck()
 end
 
 local drift = 0
-local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
-                   T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
-                   every = opts.every,
-                   output = (opts.output ~= "" and not opts.smoke) and opts.output or nil,
-                   on_step = function(s) drift = math.max(drift, s.wall_drift) end}
+local r = c:evolve(script.evolve_options(opts, {
+  flow = "sd", tau = opts.tau, tau_start = opts.tau_start, every = opts.every,
+  on_step = function(s) drift = math.max(drift, s.wall_drift) end}))
 
 local t_stop = r.event and r.event.t or r.t
 print(("stopped at t = %.5g after %d steps (%.1f s)   (seed: just before the pinch-off at t ~ "

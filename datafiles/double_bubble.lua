@@ -19,14 +19,11 @@ print(("double bubble: %d vertices, %d facets, %d surfaces, %d triple line, %d b
 
 -- 2. Evolve by surface diffusion (3.6), checking the energy at every step (Theorem 3.2).
 local worst_increase = 0
-local result = c:evolve{
-  flow = "sd", tau = opts.tau,
-  T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
-  every = opts.every, output = (opts.output ~= "" and not opts.smoke) and opts.output or nil,
+local result = c:evolve(script.evolve_options(opts, {
+  flow = "sd", tau = opts.tau, every = opts.every,
   on_step = function(s)
     worst_increase = math.max(worst_increase, (s.energy - s.energy_before) / s.energy_before)
-  end,
-}
+  end}))
 
 -- 3. Compare with the standard double bubble of the same volumes.
 local V = c:volumes()

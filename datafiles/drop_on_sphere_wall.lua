@@ -30,11 +30,9 @@ print(("drop of radius %g on the sphere wall |x| = %g: %d vertices, %d facets")
 local V0 = c:volumes()[1]
 
 local drift = 0
-local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
-                   T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
-                   project = opts.project == 1, every = opts.every,
-                   output = (opts.output ~= "" and not opts.smoke) and opts.output or nil,
-                   on_step = function(s) drift = math.max(drift, s.wall_drift) end}
+local r = c:evolve(script.evolve_options(opts, {
+  flow = "sd", tau = opts.tau, tau_start = opts.tau_start, project = opts.project == 1,
+  every = opts.every, on_step = function(s) drift = math.max(drift, s.wall_drift) end}))
 
 local measure = require("froth.measure")
 local z0, a, lo, hi = measure.axial_sphere_fit(c)

@@ -21,8 +21,7 @@ local function mean_radius()
   end
   return sum / n
 end
-local result = c:evolve{flow = "mcf", tau = opts.tau,
-                        T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil}
+local result = c:evolve(script.evolve_options(opts, {flow = "mcf", tau = opts.tau}))
 
 -- 3. Compare with R(t)^2 = R0^2 - 4t.
 local R = mean_radius()

@@ -17,9 +17,8 @@ print(("triple bubble: %d vertices, %d surfaces, %d triple lines, %d quadruple p
       :format(info.vertices, info.surfaces, info.triple_lines, info.quadruple_points, info.bodies))
 
 -- 2. Surface diffusion; the W^h conditions at the quadruple points need no user input.
-local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = 1e-7, -- ramp: 90-degree start
-                   T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil,
-                   history = (not opts.smoke) and opts.history or nil}
+-- tau_start: a ramp from the 90-degree junctions of the start
+local r = c:evolve(script.evolve_options(opts, {flow = "sd", tau = opts.tau, tau_start = 1e-7}))
 
 -- 3. Compare with the standard triple bubble of the same volumes.
 local V = c:volumes()

@@ -11,7 +11,6 @@ local opts = script.options({vertices = 6500, tau = 1e-4, T = 0.25}, arg)
 
 local c = froth.triple_bubble{vertices = opts.vertices}
 print(("triple bubble: %d vertices"):format(c:info().vertices))
-local r = c:evolve{flow = "mcf", tau = opts.tau,
-                   T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil}
+local r = c:evolve(script.evolve_options(opts, {flow = "mcf", tau = opts.tau}))
 print(("stopped at t = %g after %d steps (seed: vanishes at t ~ 0.178)"):format(r.t, r.steps))
 print("stop reason: " .. r.stop_reason)

@@ -10,8 +10,8 @@ local opts = script.options({vertices = 6500, tau = 1e-4, T = 1}, arg)
 for _, s1 in ipairs{1.25, 1.5} do
   local c = froth.triple_bubble{vertices = opts.vertices, sigma = {[1] = s1}}
   local share0 = c:area(1) / c:area()
-  local r = c:evolve{flow = "sd", tau = opts.tau, tau_start = 1e-7, -- ramp: 90-degree start
-                     T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil}
+  -- tau_start: a ramp from the 90-degree junctions of the start
+  local r = c:evolve(script.evolve_options(opts, {flow = "sd", tau = opts.tau, tau_start = 1e-7}))
   print(("sigma_1 = %g: t = %g, surface 1 holds %.2f%% of the area (%.2f%% at the start);"
          .. " Young's law deviation %.2f degrees, volume loss %.3f%%")
         :format(s1, r.t, 100 * c:area(1) / c:area(), 100 * share0, r.angles.young_error,

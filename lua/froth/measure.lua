@@ -5,6 +5,7 @@
 --   local r = measure.evolve_tracking_drift(c, {flow = "sd", tau = 1e-3, T = 1})
 --   local fit = measure.cylinder_fit(c, rho)
 local M = {}
+local script = require("froth.script")
 
 --- Mean, smallest and largest distance of the cluster's vertices from the x3 axis; with
 --- `keep(x)` (x = {x1, x2, x3}) only over the vertices it accepts (nil if it accepts none).
@@ -101,10 +102,8 @@ end
 --- the stop, the radii against the cylinder of the same volume and the contact angles.
 --- Returns the evolve result (with largest_wall_drift) and the cylinder_fit.
 function M.run_in_slab(c, opts)
-  local r = M.evolve_tracking_drift(c, {
-    flow = "sd", tau = opts.tau, tau_start = opts.tau_start,
-    T = (not opts.smoke) and opts.T or nil, steps = opts.smoke and 3 or nil, every = opts.every,
-    output = (opts.output ~= "" and not opts.smoke) and opts.output or nil})
+  local r = M.evolve_tracking_drift(c, script.evolve_options(opts, {
+    flow = "sd", tau = opts.tau, tau_start = opts.tau_start, every = opts.every}))
   local fit = M.cylinder_fit(c, opts.rho)
   local ca = r.contact_angles
   print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))

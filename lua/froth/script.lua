@@ -22,6 +22,22 @@ function M.options(defaults, argv)
   return opts
 end
 
+--- The c:evolve options of a datafile run: `fields` (not changed) plus T = opts.T, and
+--- output = opts.output and history = opts.history where those are set and not ""; with
+--- opts.smoke instead 3 steps and no files.
+function M.evolve_options(opts, fields)
+  local o = {}
+  for k, v in pairs(fields) do o[k] = v end
+  if opts.smoke then
+    o.steps = 3
+    return o
+  end
+  o.T = opts.T
+  if opts.output ~= "" then o.output = opts.output end
+  if opts.history ~= "" then o.history = opts.history end
+  return o
+end
+
 function M.keys(t)
   local names = {}
   for k in pairs(t) do names[#names + 1] = k end
