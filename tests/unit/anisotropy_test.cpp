@@ -14,6 +14,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <type_traits>
 
 namespace froth {
 namespace {
@@ -65,6 +66,27 @@ Tri random_triangle(std::mt19937& rng) {
         }
         if (min_angle > 15.0) return x;
     }
+}
+
+using Vector9d = Eigen::Matrix<double, 9, 1>;
+
+// The triangle's corners as one 9-vector (x_0, x_1, x_2), the element matrices' ordering.
+Vector9d stacked(const Tri& x) {
+    Vector9d X;
+    for (int a = 0; a < 3; ++a) X.segment<3>(3 * a) = x[a];
+    return X;
+}
+
+Vector3d unit_normal(const Tri& x) { return (x[1] - x[0]).cross(x[2] - x[0]).normalized(); }
+
+// Central difference of f (a function of the triangle) in coordinate k of the 9-vector; the
+// result has f's type (evaluated: no Eigen expression may outlive f's temporaries).
+template <class F, class R = std::decay_t<std::invoke_result_t<const F&, const Tri&>>>
+R central_difference(const F& f, const Tri& x, int k, double h) {
+    Tri xp = x, xm = x;
+    xp[k / 3][k % 3] += h;
+    xm[k / 3][k % 3] -= h;
+    return (f(xp) - f(xm)) / (2 * h);
 }
 
 using test::expect_invalid;
@@ -353,18 +375,13 @@ TEST(AnisotropyElement, MatrixTimesPositionsIsTheEnergyGradient) {
         double worst = 0.0;
         for (int t = 0; t < 5; ++t) {
             const Tri x = random_triangle(rng);
-            const Vector3d nu = (x[1] - x[0]).cross(x[2] - x[0]).normalized();
+            const Vector3d nu = unit_normal(x);
             const ElementMatrix M =
                 n.gamma.r() == 1.0 ? element_matrix(n.gamma, x) : element_matrix(n.gamma, x, nu);
-            Eigen::Matrix<double, 9, 1> X, fd;
-            for (int a = 0; a < 3; ++a)
-                X.segment<3>(3 * a) = x[a];
-            for (int k = 0; k < 9; ++k) {
-                Tri xp = x, xm = x;
-                xp[k / 3][k % 3] += h;
-                xm[k / 3][k % 3] -= h;
-                fd[k] = (element_energy(n.gamma, xp) - element_energy(n.gamma, xm)) / (2 * h);
-            }
+            const Vector9d X = stacked(x);
+            const auto energy = [&](const Tri& z) { return element_energy(n.gamma, z); };
+            Vector9d fd;
+            for (int k = 0; k < 9; ++k) fd[k] = central_difference(energy, x, k, h);
             worst = std::max(worst, (M * X - fd).cwiseAbs().maxCoeff() / fd.cwiseAbs().maxCoeff());
             // E is homogeneous of degree 2 in X: X . grad E = 2 E.
             EXPECT_NEAR(X.dot(M * X), 2 * element_energy(n.gamma, x),
@@ -387,18 +404,13 @@ TEST(AnisotropyElement, WeightJacobianIsTheDerivativeOfTheLaggedWeights) {
             Tri y = x;
             for (Vector3d& v : y) v += random_vector(rng, 0.1);
             const auto action = [&](const Tri& z) {
-                const Vector3d nu = (z[1] - z[0]).cross(z[2] - z[0]).normalized();
-                Eigen::Matrix<double, 9, 1> Z;
-                for (int a = 0; a < 3; ++a) Z.segment<3>(3 * a) = z[a];
-                return Eigen::Matrix<double, 9, 1>(element_matrix(n.gamma, x, nu) * Z);
+                const Vector3d nu = unit_normal(z);
+                return Vector9d(element_matrix(n.gamma, x, nu) * stacked(z));
             };
-            const Vector3d nu_y = (y[1] - y[0]).cross(y[2] - y[0]).normalized();
+            const Vector3d nu_y = unit_normal(y);
             const ElementMatrix J = element_matrix(n.gamma, x, nu_y) + weight_jacobian(n.gamma, x, y);
             for (int k = 0; k < 9; ++k) {
-                Tri yp = y, ym = y;
-                yp[k / 3][k % 3] += h;
-                ym[k / 3][k % 3] -= h;
-                const Eigen::Matrix<double, 9, 1> fd = (action(yp) - action(ym)) / (2 * h);
+                const Vector9d fd = central_difference(action, y, k, h);
                 worst = std::max(worst, (J.col(k) - fd).cwiseAbs().maxCoeff() / (1 + J.norm()));
             }
             if (n.gamma.r() == 1.0) EXPECT_EQ(weight_jacobian(n.gamma, x, y).norm(), 0.0);
