@@ -117,6 +117,21 @@ void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const st
     M.finish();
 }
 
+void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal, SparseBuilder& M) {
+    M.begin(c.n_vertices(), c.n_vertices());
+    const auto& X = c.positions();
+    for (const Surface& s : c.surfaces()) {
+        const double w = isotropic_weight(s);
+        for (const Tri& t : s.triangles) {
+            const Eigen::Matrix3d K = w * local_stiffness(X[t[0]], X[t[1]], X[t[2]]);
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) M.add(t[a], t[b], K(a, b));
+        }
+    }
+    for (int v = 0; v < c.n_vertices(); ++v) M.add(v, v, diagonal[v]);
+    M.finish();
+}
+
 void assemble_mcf(const Cluster& c, const PairGeometry& g, const PositionBasis& P, double tau,
                   const FacetNormals* lagged, SparseBuilder& M, Eigen::VectorXd& rhs) {
     const int n = P.size();

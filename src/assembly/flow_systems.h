@@ -48,6 +48,12 @@ Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
 void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const std::vector<Vec3>& X,
                               int size, SparseBuilder& M);
 
+/// The scalar P1 stiffness of all surfaces, sum_i w_i K_i with w_i the isotropic tension, plus
+/// diag(diagonal) (one entry per vertex): n_vertices x n_vertices. For an isotropic cluster
+/// without walls A = this (x) I_3, so a system with a proximal term of the full lumped mass
+/// splits into three scalar ones (minimize). \pre every surface is isotropic.
+void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal, SparseBuilder& M);
+
 /// The systems in the reduced position unknowns y of P (dX_v = T_v y_v, (3.10)/(3.11)); with
 /// no walls P is the identity and these are (3.7)/(3.8) ((3.5)/(3.6) when isotropic).
 void assemble_mcf(const Cluster& c, const PairGeometry& g, const PositionBasis& P, double tau,

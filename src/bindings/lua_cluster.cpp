@@ -4,6 +4,7 @@
 
 #include "bindings/lua_anisotropy.h"
 #include "bindings/luax.h"
+#include "bindings/lua_statics.h"
 #include "bindings/lua_walls.h"
 #include "io/write.h"
 #include "run/evolve.h"
@@ -470,7 +471,13 @@ void push_step_report(lua_State* L, const StepReport& r) {
     set_integer(L, "substeps", r.substeps);
 }
 
-void register_cluster_type(lua_State* L) { register_type(L, kClusterType, methods, l_gc, l_tostring); }
+void register_cluster_type(lua_State* L) {
+    register_type(L, kClusterType, methods, l_gc, l_tostring);
+    luaL_getmetatable(L, kClusterType);
+    lua_getfield(L, -1, "__index");
+    add_statics_methods(L);
+    lua_pop(L, 2);
+}
 
 void push_cluster(lua_State* L, ClusterSpec spec) {
     auto handle = std::make_shared<ClusterHandle>(Cluster(std::move(spec)));

@@ -15,35 +15,6 @@ double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string facet_name(int surface, int facet) {
-    return "facet " + std::to_string(facet + 1) + " of surface " + std::to_string(surface + 1);
-}
-
-/// The first facet whose area is not positive relative to its edges, or {-1, -1}.
-std::pair<int, int> find_degenerate_facet(const Cluster& c, const std::vector<Vec3>& X) {
-    for (int i = 0; i < c.n_surfaces(); ++i) {
-        const auto& tris = c.surface(i).triangles;
-        for (int f = 0; f < static_cast<int>(tris.size()); ++f) {
-            const Tri& t = tris[f];
-            const double scale = (X[t[1]] - X[t[0]]).squaredNorm() +
-                                 (X[t[2]] - X[t[0]]).squaredNorm();
-            if (!(area_vector2(X, t).norm() > 1e-12 * scale)) return {i, f};
-        }
-    }
-    return {-1, -1};
-}
-
-/// The optional projection of the seed's remark after (3.12): every wall-attached vertex moved
-/// back onto its walls (alternating projections for a vertex on two). Loses the stability
-/// bound of Theorem 3.4 in general.
-void project_vertices(const Cluster& c, std::vector<Vec3>& X) {
-    for (int v = 0; v < c.n_vertices(); ++v) {
-        const std::vector<int> walls = c.vertex_walls(v);
-        for (int pass = 0; pass < (walls.size() > 1 ? 20 : 1); ++pass)
-            for (int w : walls) X[v] = c.walls()[w]->project(X[v]);
-    }
-}
-
 } // namespace
 
 Flow parse_flow(std::string_view name) {
@@ -225,7 +196,7 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
     const Eigen::VectorXd z = c.nonlinear() ? solve_newton(c, flow, tau, P, report)
                                             : solve_once(c, flow, tau, P, nullptr, report);
     std::vector<Vec3> X = displaced(c, P, z);
-    if (project_onto_walls) project_vertices(c, X);
+    if (project_onto_walls) project_onto_walls_of(c, X);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
         throw GeometryError("step: with tau = " + fmt(tau) + " the step would collapse " +
                             facet_name(s, f) + "; the cluster is unchanged (try a smaller tau)");

@@ -6,6 +6,31 @@
 
 namespace froth {
 
+std::pair<int, int> find_degenerate_facet(const Cluster& c, const std::vector<Vec3>& X) {
+    for (int i = 0; i < c.n_surfaces(); ++i) {
+        const auto& tris = c.surface(i).triangles;
+        for (int f = 0; f < static_cast<int>(tris.size()); ++f) {
+            const Tri& t = tris[f];
+            const double scale = (X[t[1]] - X[t[0]]).squaredNorm() +
+                                 (X[t[2]] - X[t[0]]).squaredNorm();
+            if (!(area_vector2(X, t).norm() > 1e-12 * scale)) return {i, f};
+        }
+    }
+    return {-1, -1};
+}
+
+std::string facet_name(int surface, int facet) {
+    return "facet " + std::to_string(facet + 1) + " of surface " + std::to_string(surface + 1);
+}
+
+void project_onto_walls_of(const Cluster& c, std::vector<Vec3>& X) {
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        const std::vector<int> walls = c.vertex_walls(v);
+        for (int pass = 0; pass < (walls.size() > 1 ? 20 : 1); ++pass)
+            for (int w : walls) X[v] = c.walls()[w]->project(X[v]);
+    }
+}
+
 std::vector<double> surface_areas(const Cluster& c) {
     std::vector<double> areas(c.n_surfaces(), 0.0);
     for (int i = 0; i < c.n_surfaces(); ++i)
@@ -22,15 +47,16 @@ double energy(const Cluster& c) {
     return e;
 }
 
-std::vector<double> body_volumes(const Cluster& c) {
-    const auto& X = c.positions();
+std::vector<double> body_volumes(const Cluster& c) { return body_volumes(c, c.positions()); }
+
+std::vector<double> body_volumes(const Cluster& c, const std::vector<Vec3>& X) {
     std::vector<double> volumes;
     for (const Body& b : c.bodies()) {
         double v = 0;
         for (const BodyFace& f : b.faces)
             for (const Tri& t : c.surface(f.surface).triangles)
                 v += f.sign * X[t[0]].dot(X[t[1]].cross(X[t[2]])) / 6.0;
-        for (const Lid& lid : b.lids) v += lid_volume(c, lid);
+        for (const Lid& lid : b.lids) v += lid_volume(c, lid, X);
         volumes.push_back(v);
     }
     return volumes;

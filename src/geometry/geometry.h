@@ -5,6 +5,10 @@
 
 #include "mesh/cluster.h"
 
+#include <Eigen/SparseCore>
+
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace froth {
@@ -14,6 +18,16 @@ inline Vec3 area_vector2(const std::vector<Vec3>& X, const Tri& t) {
     return (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]);
 }
 
+/// The first (surface, facet) whose area at positions X is not positive relative to its edges
+/// (|x1 - x0| x |x2 - x0| <= 1e-12 (|x1 - x0|^2 + |x2 - x0|^2)), or {-1, -1}.
+std::pair<int, int> find_degenerate_facet(const Cluster& c, const std::vector<Vec3>& X);
+/// "facet f of surface s" (1-based) for messages.
+std::string facet_name(int surface, int facet);
+
+/// Moves every wall-attached vertex of X back onto its walls (alternating projections for a
+/// vertex on two): the optional projection of the seed's remark after (3.12).
+void project_onto_walls_of(const Cluster& c, std::vector<Vec3>& X);
+
 /// |Gamma_i| for every surface i.
 std::vector<double> surface_areas(const Cluster& c);
 /// E = sum_i sigma_i |Gamma_i| (seed (1.5) with tensions); with anisotropies
@@ -22,8 +36,20 @@ double energy(const Cluster& c);
 /// Body volumes by the divergence theorem, exact for closed polyhedra (numerics.md §1); a
 /// body closed by a wall adds its lids (lid_volume: exact on flat walls).
 std::vector<double> body_volumes(const Cluster& c);
+/// The same at positions X (one per vertex) instead of the cluster's own.
+std::vector<double> body_volumes(const Cluster& c, const std::vector<Vec3>& X);
 /// max_b |V_b - V_b(0)| / V_b(0); 0 for a cluster without bodies.
 double max_volume_loss(const Cluster& c, const std::vector<double>& volumes);
+
+/// The gradients of the body volumes with respect to the vertex positions: column b holds
+/// d V_b / d X_v in rows 3v..3v+2 (3 n_vertices x n_bodies). Away from lids this is
+/// (1/6) sum of the signed area vectors (x_1 - x_0) x (x_2 - x_0) of the body's facets at v, the
+/// translation-invariant form that sums to zero over a closed body; at the rim vertices of a
+/// lid the films' cone gradients plus the lid's own (lid_volume differentiated by central
+/// differences, exact for flat walls, where it is quadratic in the positions).
+Eigen::SparseMatrix<double> body_volume_gradients(const Cluster& c);
+/// The same at positions X (one per vertex) instead of the cluster's own.
+Eigen::SparseMatrix<double> body_volume_gradients(const Cluster& c, const std::vector<Vec3>& X);
 
 /// Per (surface, vertex) pair (Cluster::pair_*): lumped mass m_iv = 1/3 sum |sigma| and the
 /// area-weighted normal omega_iv = sum |sigma| nu_sigma / sum |sigma| (not normalised).

@@ -123,9 +123,9 @@ void Cluster::find_lids(Body& body) const {
     }
 }
 
-double lid_volume(const Cluster& c, const Lid& lid) {
+double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) {
     Vec3 center = Vec3::Zero();
-    for (const auto& e : lid.edges) center += c.position(e[0]);
+    for (const auto& e : lid.edges) center += X[e[0]];
     center /= static_cast<double>(lid.edges.size());
     // The fan's apex on all the lid's walls (alternating projections: their common line or
     // corner for planes). Any such point closes a flat lid exactly.
@@ -134,17 +134,19 @@ double lid_volume(const Cluster& c, const Lid& lid) {
         for (int w : lid.walls) {
             const Wall& wall = *c.walls()[w];
             apex = wall.gradient(apex).norm() > 0 ? wall.project(apex)
-                                                  : c.position(lid.edges.front()[0]);
+                                                  : X[lid.edges.front()[0]];
         }
     // On one wall its own flux (curved walls count the lid's bulge); across walls flat fans.
     double flux = 0;
     for (const auto& e : lid.edges) {
-        const Vec3 &a = c.position(e[0]), &b = c.position(e[1]);
+        const Vec3 &a = X[e[0]], &b = X[e[1]];
         flux += lid.walls.size() == 1 ? c.walls()[lid.walls[0]]->fan_flux(apex, a, b)
                                       : 0.5 * apex.dot(b.cross(a));
     }
     return flux / 3.0;
 }
+
+double lid_volume(const Cluster& c, const Lid& lid) { return lid_volume(c, lid, c.positions()); }
 
 std::vector<int> drop_wall_lids(ClusterSpec& spec) {
     double length = 0;

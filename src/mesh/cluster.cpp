@@ -49,6 +49,25 @@ Cluster::Cluster(ClusterSpec spec) {
     }
     build_csr_lists(n_vertices(), vertex_edge, vj_start_, vj_list_);
     orient_bodies(spec.bodies);
+    target_volumes_ = initial_volumes_;
+}
+
+void Cluster::set_target_volume(int body, double volume) {
+    if (body < 0 || body >= n_bodies())
+        throw InvalidInput("set_volume: there is no body " + std::to_string(body + 1) + " (the "
+                           "cluster has " + std::to_string(n_bodies()) + ")");
+    if (!(std::isfinite(volume) && volume > 0))
+        throw InvalidInput("set_volume: body " + std::to_string(body + 1) +
+                           ": the volume must be positive and finite, got " + fmt(volume));
+    target_volumes_[body] = volume;
+}
+
+void Cluster::set_volume_references(std::vector<double> initial, std::vector<double> target) {
+    if (initial.size() != bodies_.size() || target.size() != bodies_.size())
+        throw InvalidInput("set_volume_references: expected " + std::to_string(n_bodies()) +
+                           " volumes");
+    initial_volumes_ = std::move(initial);
+    target_volumes_ = std::move(target);
 }
 
 void Cluster::check_spec(const ClusterSpec& spec) const {

@@ -163,6 +163,15 @@ class Cluster {
     void set_time(double t) { time_ = t; }
     /// Body volumes when the cluster was made: the reference for volume-loss reports.
     const std::vector<double>& initial_volumes() const { return initial_volumes_; }
+    /// The volume each body is held at by the volume-exact schemes (surface diffusion with
+    /// exact_volumes, minimize): the initial volume unless set_target_volume changed it.
+    const std::vector<double>& target_volumes() const { return target_volumes_; }
+    /// \throw InvalidInput for a body id out of range or a volume that is not positive and
+    /// finite (the message names the body and the value).
+    void set_target_volume(int body, double volume);
+    /// Replaces the reference and target volumes (same count as bodies; used when a cluster is
+    /// rebuilt from another one, e.g. by refine, so reports keep measuring from the start).
+    void set_volume_references(std::vector<double> initial, std::vector<double> target);
     /// Total facet area when the cluster was made: a length scale for degeneracy checks.
     double initial_area() const { return initial_area_; }
 
@@ -185,7 +194,7 @@ class Cluster {
     std::vector<WallPtr> walls_;
     std::vector<BoundaryEdge> boundary_edges_;
     std::vector<int> vw_start_, vw_list_, freedom_; // CSR vertex -> walls; free directions
-    std::vector<double> initial_volumes_;
+    std::vector<double> initial_volumes_, target_volumes_;
     double initial_area_ = 0;
     int n_facets_ = 0;
     double time_ = 0.0;
@@ -205,5 +214,7 @@ std::vector<int> drop_wall_lids(ClusterSpec& spec);
 /// flux of the wall patch it spans (Wall::fan_flux: exact for spheres up to O(h^2), the flat
 /// triangle for other walls, which leaves out the lid's bulge).
 double lid_volume(const Cluster& c, const Lid& lid);
+/// The same at positions X (one per vertex of c) instead of the cluster's own.
+double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X);
 
 } // namespace froth

@@ -103,6 +103,23 @@ void SparseDirectSolver::factorize(const SparseMatrix& A) {
     factorized_ = true;
 }
 
+Eigen::MatrixXd SparseDirectSolver::solve_fresh(const SparseMatrix& A, const Eigen::MatrixXd& B) {
+    factorize(A);
+    Eigen::MatrixXd X = kind_ == Factorization::Cholesky ? Eigen::MatrixXd(impl_->llt.solve(B))
+                                                         : Eigen::MatrixXd(impl_->lu.solve(B));
+    last_iterations_ = kRefactorAfter + 1; // a later solve() must not trust this factor blindly
+    if (!X.allFinite()) throw SolverError("solve: the direct solve produced non-finite values");
+    return X;
+}
+
+Eigen::MatrixXd SparseDirectSolver::solve_with_last_factor(const Eigen::MatrixXd& B) const {
+    if (!factorized_) throw SolverError("solve: no factorisation to reuse");
+    Eigen::MatrixXd X = kind_ == Factorization::Cholesky ? Eigen::MatrixXd(impl_->llt.solve(B))
+                                                         : Eigen::MatrixXd(impl_->lu.solve(B));
+    if (!X.allFinite()) throw SolverError("solve: the direct solve produced non-finite values");
+    return X;
+}
+
 Eigen::VectorXd SparseDirectSolver::apply_factor(const Eigen::VectorXd& b) const {
     if (kind_ == Factorization::Cholesky) return impl_->llt.solve(b);
     return impl_->lu.solve(b);

@@ -40,6 +40,14 @@ class SparseDirectSolver {
     /// \throw SolverError if A is not finite, singular, (Cholesky) not positive definite, or
     ///        the solve does not reach the tolerance even with a fresh factorisation.
     Eigen::VectorXd solve(const SparseMatrix& A, const Eigen::VectorXd& b, SolveStats* stats = nullptr);
+    /// Factorises A afresh (the pattern's analysis is kept) and solves A X = B for all columns
+    /// of B with that factor: the plain direct method, one pair of triangular solves per
+    /// column, for iterations that correct their own round-off (minimize).
+    /// \throw SolverError as solve() does, or if the result is not finite.
+    Eigen::MatrixXd solve_fresh(const SparseMatrix& A, const Eigen::MatrixXd& B);
+    /// Applies the last factorisation to the columns of B (a matrix the factor was made for, or
+    /// one near it in an iteration that tolerates that). \throw SolverError if there is none.
+    Eigen::MatrixXd solve_with_last_factor(const Eigen::MatrixXd& B) const;
 
   private:
     void factorize(const SparseMatrix& A);

@@ -1,0 +1,88 @@
+// froth.Cluster methods for statics: equilibria at fixed volumes, pressures, target volumes.
+#include "bindings/lua_statics.h"
+
+#include "bindings/lua_cluster.h"
+#include "bindings/luax.h"
+#include "flows/minimize.h"
+
+namespace froth::lua {
+namespace {
+
+ClusterHandle& self(lua_State* L) { return check<ClusterHandle>(L, 1, kClusterType); }
+
+/// c:minimize{tol, max_iterations, tau_start, tau_growth, volume_tol}
+int l_minimize(lua_State* L) {
+    ClusterHandle& h = self(L);
+    Options o(L, 2, "minimize", true);
+    MinimizeOptions m;
+    m.tol = o.number("tol", m.tol);
+    m.max_iterations = static_cast<int>(o.integer("max_iterations", m.max_iterations));
+    m.tau_start = o.number("tau_start", m.tau_start);
+    m.tau_growth = o.number("tau_growth", m.tau_growth);
+    m.tau_max = o.number("tau_max", m.tau_max);
+    m.volume_tol = o.number("volume_tol", m.volume_tol);
+    o.finish();
+    return guarded(L, [&] {
+        const MinimizeResult r = minimize(h.cluster, m);
+        lua_createtable(L, 0, 10);
+        set_number(L, "energy", r.energy);
+        push_numbers(L, r.volumes);
+        lua_setfield(L, -2, "volumes");
+        push_numbers(L, r.pressures);
+        lua_setfield(L, -2, "pressures");
+        set_number(L, "residual", r.residual);
+        set_number(L, "volume_error", r.volume_error);
+        set_integer(L, "iterations", r.iterations);
+        set_integer(L, "rejected", r.rejected);
+        set_number(L, "wall_s", r.wall_seconds);
+        lua_pushboolean(L, r.converged);
+        lua_setfield(L, -2, "converged");
+        lua_pushstring(L, r.stop_reason.c_str());
+        lua_setfield(L, -2, "stop_reason");
+        return 1;
+    });
+}
+
+/// c:pressures() -> {p_1, ..., p_n}, residual
+int l_pressures(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    return guarded(L, [&] {
+        const EquilibriumState s = equilibrium_state(c);
+        push_numbers(L, s.pressures);
+        lua_pushnumber(L, s.residual);
+        return 2;
+    });
+}
+
+/// c:set_volume(body, v)
+int l_set_volume(lua_State* L) {
+    Cluster& c = self(L).cluster;
+    const int b = check_id(L, 2, c.n_bodies(), "body", "bodies");
+    if (lua_type(L, 3) != LUA_TNUMBER)
+        return luaL_error(L, "set_volume: body %d: expected a volume (a number), got %s", b + 1,
+                          luaL_typename(L, 3));
+    const double v = lua_tonumber(L, 3);
+    return guarded(L, [&] {
+        c.set_target_volume(b, v);
+        return 0;
+    });
+}
+
+int l_target_volumes(lua_State* L) {
+    push_numbers(L, self(L).cluster.target_volumes());
+    return 1;
+}
+
+const luaL_Reg methods[] = {
+    {"minimize", l_minimize},
+    {"pressures", l_pressures},
+    {"set_volume", l_set_volume},
+    {"target_volumes", l_target_volumes},
+    {nullptr, nullptr},
+};
+
+} // namespace
+
+void add_statics_methods(lua_State* L) { luaL_setfuncs(L, methods, 0); }
+
+} // namespace froth::lua

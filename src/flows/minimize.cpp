@@ -1,0 +1,415 @@
+// Static equilibria at fixed volumes: the volume-constrained mean curvature step with tau
+// growing without bound (minimize.h has the equations).
+#include "flows/minimize.h"
+
+#include "assembly/flow_systems.h"
+#include "core/errors.h"
+#include "core/format.h"
+#include "core/interrupt.h"
+#include "solvers/sparse_solvers.h"
+
+#include <Eigen/Dense>
+
+#include <chrono>
+#include <cmath>
+
+namespace froth {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The first variation of a cluster in the reduced position unknowns, with the weights of the
+/// least-squares problem for the pressures.
+struct Variation {
+    Eigen::VectorXd grad_energy;      ///< T^T grad E, its component normal to the films
+    Eigen::VectorXd grad_energy_full; ///< T^T grad E
+    Eigen::MatrixXd grad_volume; ///< T^T G, one column per body
+    Eigen::VectorXd weight;      ///< 1 / m_v on the rows of vertex v
+    double area = 0, energy = 0;
+};
+
+/// y_v projected onto the span of T_v^T omega_iv over the surfaces i at v: the film normal at
+/// a surface vertex, the plane normal to the line at a triple-line vertex, everything at a
+/// quadruple point (Evolver's hessian_normal directions). The tangential rest of the first
+/// variation only redistributes vertices within the films; BGN's tangential structure leaves it
+/// nonzero, and it moves the energy by orders of magnitude less than the normal part.
+void project_normal(const Cluster& c, const PositionBasis& P, const PairGeometry& g,
+                    Eigen::VectorXd& y) {
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        const int n = P.dim(v), pairs = c.pair_begin(v + 1) - c.pair_begin(v);
+        Eigen::MatrixXd N(n, pairs);
+        for (int k = 0; k < pairs; ++k)
+            N.col(k) = P.T(v).leftCols(n).transpose() * g.omega[c.pair_begin(v) + k];
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd(N, Eigen::ComputeThinU);
+        const auto& s = svd.singularValues();
+        int rank = 0;
+        while (rank < s.size() && s[rank] > 1e-8 * s[0]) ++rank;
+        const Eigen::MatrixXd Q = svd.matrixU().leftCols(rank);
+        auto seg = y.segment(P.offset(v), n);
+        seg = Q * (Q.transpose() * seg);
+    }
+}
+
+Variation first_variation(const Cluster& c, const PositionBasis& P, const PairGeometry& g) {
+    Variation d;
+    d.grad_energy_full = P.restrict(apply_stiffness(c, c.positions()));
+    d.grad_energy = d.grad_energy_full;
+    project_normal(c, P, g, d.grad_energy);
+    const Eigen::SparseMatrix<double> G = body_volume_gradients(c);
+    d.grad_volume.resize(P.size(), c.n_bodies());
+    for (int b = 0; b < c.n_bodies(); ++b)
+        d.grad_volume.col(b) = P.restrict(Eigen::VectorXd(G.col(b)));
+    d.weight.resize(P.size());
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        double m = 0;
+        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) m += g.mass[k];
+        d.weight.segment(P.offset(v), P.dim(v)).setConstant(1.0 / m);
+        d.area += m;
+    }
+    d.energy = energy(c);
+    return d;
+}
+
+EquilibriumState balance(const Variation& d) {
+    EquilibriumState s;
+    const Eigen::MatrixXd WB = d.weight.asDiagonal() * d.grad_volume;
+    const Eigen::VectorXd p = (d.grad_volume.transpose() * WB).ldlt().solve(WB.transpose() * d.grad_energy);
+    const Eigen::VectorXd r = d.grad_energy - d.grad_volume * p;
+    s.pressures.assign(p.data(), p.data() + p.size());
+    const double R = std::sqrt(d.area / (4 * M_PI)), sigma = d.energy / d.area;
+    s.residual = std::sqrt(r.dot(d.weight.asDiagonal() * r) / d.area) * R / sigma;
+    return s;
+}
+
+double volume_error(const std::vector<double>& V, const std::vector<double>& target) {
+    double e = 0;
+    for (std::size_t b = 0; b < V.size(); ++b) e = std::max(e, std::abs(V[b] - target[b]) / target[b]);
+    return e;
+}
+
+void check(const MinimizeOptions& o) {
+    if (!(std::isfinite(o.tol) && o.tol > 0))
+        throw InvalidInput("minimize: tol must be positive and finite, got " + fmt(o.tol));
+    if (o.max_iterations < 1)
+        throw InvalidInput("minimize: max_iterations must be at least 1, got " +
+                           std::to_string(o.max_iterations));
+    if (!(std::isfinite(o.tau_start) && o.tau_start > 0))
+        throw InvalidInput("minimize: tau_start must be positive and finite, got " +
+                           fmt(o.tau_start));
+    if (!(o.tau_growth >= 1 && o.tau_growth <= 100))
+        throw InvalidInput("minimize: tau_growth must be in [1, 100], got " + fmt(o.tau_growth));
+    if (!(std::isfinite(o.tau_max) && o.tau_max >= o.tau_start))
+        throw InvalidInput("minimize: tau_max must be finite and at least tau_start, got " +
+                           fmt(o.tau_max));
+    if (!(std::isfinite(o.volume_tol) && o.volume_tol > 0))
+        throw InvalidInput("minimize: volume_tol must be positive and finite, got " +
+                           fmt(o.volume_tol));
+}
+
+/// Solves K U = B column by column with one fresh factorisation, where K is the step's
+/// matrix in the reduced unknowns: T^T (A + 1/tau sum m omega omega^T) T, or for an isotropic
+/// cluster without walls (K_scalar + 1/tau diag(m)) (x) I_3, whose three coordinates are one
+/// scalar system with three times the columns.
+class StepSystem {
+  public:
+    explicit StepSystem(const Cluster& c) {
+        separable_ = !c.has_walls() && !c.anisotropic();
+    }
+
+    void assemble(const Cluster& c, const PositionBasis& P, const PairGeometry& g, double tau) {
+        if (!separable_) {
+            Eigen::VectorXd rhs;
+            assemble_mcf(c, g, P, tau, nullptr, builder_, rhs);
+            return;
+        }
+        Eigen::VectorXd mass = Eigen::VectorXd::Zero(c.n_vertices());
+        for (int v = 0; v < c.n_vertices(); ++v)
+            for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) mass[v] += g.mass[k] / tau;
+        assemble_scalar_stiffness(c, mass, builder_);
+    }
+
+    /// Solves with the matrix of the last assemble() (fresh) or with the last factor.
+    Eigen::MatrixXd solve(const Eigen::MatrixXd& B, bool fresh) {
+        if (!separable_) return fresh ? solver_.solve_fresh(builder_.finish(), B)
+                                      : solver_.solve_with_last_factor(B);
+        const Eigen::Index n = B.rows() / 3, k = B.cols();
+        Eigen::MatrixXd S(n, 3 * k); // column j of B as an n x 3 block (rows are vertices)
+        for (Eigen::Index j = 0; j < k; ++j)
+            S.middleCols(3 * j, 3) = Eigen::Map<const RowBlock>(B.col(j).data(), n, 3);
+        const Eigen::MatrixXd Y = fresh ? solver_.solve_fresh(builder_.finish(), S)
+                                        : solver_.solve_with_last_factor(S);
+        Eigen::MatrixXd U(B.rows(), k);
+        for (Eigen::Index j = 0; j < k; ++j)
+            Eigen::Map<RowBlock>(U.col(j).data(), n, 3) = Y.middleCols(3 * j, 3);
+        return U;
+    }
+
+  private:
+    using RowBlock = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+    bool separable_ = false;
+    SparseBuilder builder_;
+    SparseDirectSolver solver_{Factorization::Cholesky};
+};
+
+/// The step of minimize.h from the first variation d: K y = -T^T grad E + B p, B^T y = dV with
+/// B = T^T G, by the Schur complement (B^T K^-1 B) p = dV + B^T K^-1 T^T grad E.
+Eigen::VectorXd constrained_step(StepSystem& K, bool fresh, const Variation& d,
+                                 const Eigen::VectorXd& dV, Eigen::VectorXd& p) {
+    const Eigen::Index nb = d.grad_volume.cols();
+    Eigen::MatrixXd rhs(d.grad_energy_full.size(), nb + 1);
+    rhs.col(0) = -d.grad_energy_full;
+    rhs.rightCols(nb) = d.grad_volume;
+    const Eigen::MatrixXd U = K.solve(rhs, fresh);
+    if (nb == 0) {
+        p.resize(0);
+        return U.col(0);
+    }
+    const Eigen::MatrixXd BU = d.grad_volume.transpose() * U.rightCols(nb);
+    p = BU.partialPivLu().solve(dV - d.grad_volume.transpose() * U.col(0));
+    return U.col(0) + U.rightCols(nb) * p;
+}
+
+/// Anderson acceleration (type II, the last `depth` differences) of the fixed-point map
+/// x -> x + f(x) that the steps at the largest tau are: it turns the slow, nearly linear
+/// convergence of the tangential mesh motion into a few iterations. Plain steps otherwise.
+class Anderson {
+  public:
+    explicit Anderson(int depth) : depth_(depth) {}
+    void reset() { dx_.clear(), df_.clear(), have_last_ = false; }
+    /// The next iterate from x and f = step(x) - x.
+    Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& f) {
+        if (have_last_) {
+            dx_.push_back(x - x_last_), df_.push_back(f - f_last_);
+            if (static_cast<int>(dx_.size()) > depth_) dx_.erase(dx_.begin()), df_.erase(df_.begin());
+        }
+        x_last_ = x, f_last_ = f, have_last_ = true;
+        if (dx_.empty()) return x + f;
+        Eigen::MatrixXd DF(f.size(), df_.size()), DX(f.size(), dx_.size());
+        for (std::size_t j = 0; j < df_.size(); ++j) DF.col(j) = df_[j], DX.col(j) = dx_[j];
+        const Eigen::VectorXd gamma = DF.colPivHouseholderQr().solve(f);
+        return x + f - (DX + DF) * gamma;
+    }
+
+  private:
+    int depth_;
+    std::vector<Eigen::VectorXd> dx_, df_;
+    Eigen::VectorXd x_last_, f_last_;
+    bool have_last_ = false;
+};
+
+Eigen::VectorXd flatten(const std::vector<Vec3>& X) {
+    return Eigen::Map<const Eigen::VectorXd>(X[0].data(), 3 * static_cast<Eigen::Index>(X.size()));
+}
+
+std::vector<Vec3> unflatten(const Eigen::VectorXd& x) {
+    std::vector<Vec3> X(x.size() / 3);
+    for (std::size_t v = 0; v < X.size(); ++v) X[v] = x.segment<3>(3 * v);
+    return X;
+}
+
+class Minimizer {
+  public:
+    Minimizer(Cluster& c, const MinimizeOptions& o) : c_(c), o_(o), system_(c) {
+        double area = 0;
+        for (double a : surface_areas(c)) area += a;
+        R2_ = area / (4 * M_PI);
+        tau_ = o.tau_start * R2_;
+        for (const WallPtr& w : c.walls()) all_walls_flat_ = all_walls_flat_ && w->is_flat();
+        min_angle_ = min_facet_angle(c.positions());
+    }
+
+    MinimizeResult run() {
+        const auto t0 = Clock::now();
+        EngineLoopScope loop;
+        MinimizeResult r;
+        int rejects_in_row = 0;
+        for (;;) {
+            const PositionBasis P(c_);
+            const PairGeometry g = pair_geometry(c_);
+            const Variation d = first_variation(c_, P, g);
+            const EquilibriumState s = balance(d);
+            const std::vector<double> V = body_volumes(c_);
+            r.residual = s.residual, r.pressures = s.pressures;
+            r.volume_error = volume_error(V, c_.target_volumes());
+            if (r.residual <= o_.tol && r.volume_error <= o_.volume_tol) {
+                r.converged = true, r.stop_reason = "converged";
+                break;
+            }
+            if (r.iterations >= o_.max_iterations) {
+                r.stop_reason = "max_iterations";
+                break;
+            }
+            if (consume_interrupt()) {
+                r.stop_reason = "interrupted";
+                break;
+            }
+            if (rejects_in_row > 40) {
+                r.stop_reason = "stalled: no step of tau >= " + fmt(tau_) +
+                                " lowers the energy (residual " + fmt(r.residual) + ")";
+                break;
+            }
+            if (try_step(P, g, d, V)) {
+                ++r.iterations, rejects_in_row = 0;
+                tau_ = std::min(tau_ * o_.tau_growth, o_.tau_max * R2_);
+                const double angle = min_facet_angle(c_.positions());
+                if (angle < kDegenerateAngle) {
+                    r.stop_reason = "topology: a facet angle fell to " + fmt(angle) +
+                                    " degrees (a film or triple line is collapsing: the "
+                                    "energy goes down by a change of topology, e.g. a pinch-off)";
+                    break;
+                }
+            } else {
+                ++r.rejected, ++rejects_in_row;
+                tau_ /= 8;
+                anderson_.reset();
+            }
+        }
+        r.energy = energy(c_);
+        r.volumes = body_volumes(c_);
+        r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        return r;
+    }
+
+  private:
+    /// One step at the current tau (accelerated at the largest tau); false (cluster unchanged)
+    /// if it collapses a facet or raises the energy by more than the volume correction accounts
+    /// for.
+    bool try_step(const PositionBasis& P, const PairGeometry& g, const Variation& d,
+                  const std::vector<double>& V) {
+        try {
+            return try_step_or_throw(P, g, d, V);
+        } catch (const SolverError&) { // a nearly singular system: a smaller tau regularises it
+            has_factor_ = false;
+            return false;
+        }
+    }
+
+    bool try_step_or_throw(const PositionBasis& P, const PairGeometry& g, const Variation& d,
+                           const std::vector<double>& V) {
+        // At the largest tau the factor is reused for kReuse steps: the fixed point
+        // (grad E = G p, y = 0) does not depend on the matrix, only the rate does, and a step
+        // that fails the merit test is retried with a fresh one.
+        const bool limit = tau_ >= o_.tau_max * R2_;
+        const bool fresh = !limit || steps_on_factor_ >= kReuse || !has_factor_;
+        if (fresh) {
+            system_.assemble(c_, P, g, tau_);
+            steps_on_factor_ = 0, has_factor_ = true;
+        }
+        ++steps_on_factor_;
+        Eigen::VectorXd dV(c_.n_bodies());
+        for (int b = 0; b < c_.n_bodies(); ++b) dV[b] = c_.target_volumes()[b] - V[b];
+        Eigen::VectorXd p;
+        const Eigen::VectorXd y = constrained_step(system_, fresh, d, dV, p);
+        std::vector<Vec3> X = c_.positions();
+        for (int v = 0; v < c_.n_vertices(); ++v) X[v] += P.displacement(y, v);
+        if (!all_walls_flat_) project_onto_walls_of(c_, X);
+        // The merit is the Lagrangian E - p . (V - V*) with the step's multipliers: the energy
+        // at fixed volumes to first order, so a step that corrects the volumes is not mistaken
+        // for one that raises the energy.
+        const auto merit = [&](const std::vector<Vec3>& Y) {
+            const std::vector<double> W = body_volumes(c_, Y);
+            double m = energy_at(Y);
+            for (int b = 0; b < c_.n_bodies(); ++b) m -= p[b] * (W[b] - c_.target_volumes()[b]);
+            return m;
+        };
+        const double bound = merit(c_.positions()) + 1e-12 * std::abs(d.energy);
+        if (limit) {
+            const Eigen::VectorXd x = flatten(c_.positions());
+            std::vector<Vec3> A = unflatten(anderson_.next(x, flatten(X) - x));
+            if (!all_walls_flat_) project_onto_walls_of(c_, A);
+            restore_volumes(P, d, A);
+            if (acceptable(A, merit, bound) && min_facet_angle(A) >= kAngleKept * min_angle_) {
+                c_.set_positions(std::move(A));
+                return true;
+            }
+            anderson_.reset();
+        }
+        restore_volumes(P, d, X);
+        if (!acceptable(X, merit, bound)) {
+            if (!fresh) steps_on_factor_ = kReuse, tau_ *= 8; // retry at once, freshly factored
+            return false;
+        }
+        c_.set_positions(std::move(X));
+        return true;
+    }
+
+    /// Moves X along W G (W = diag(1 / m_v), within the walls' tangents) until every body has
+    /// its target volume to round-off: a few Newton steps on the n_bodies equations, the
+    /// projection that keeps Anderson's mixed iterates (and every other) volume exact.
+    void restore_volumes(const PositionBasis& P, const Variation& d, std::vector<Vec3>& X) const {
+        const int nb = c_.n_bodies();
+        for (int it = 0; it < 4 && nb > 0; ++it) {
+            const std::vector<double> V = body_volumes(c_, X);
+            Eigen::VectorXd dV(nb);
+            for (int b = 0; b < nb; ++b) dV[b] = c_.target_volumes()[b] - V[b];
+            if (volume_error(V, c_.target_volumes()) <= 1e-15) return;
+            const Eigen::SparseMatrix<double> G = body_volume_gradients(c_, X);
+            Eigen::MatrixXd B(P.size(), nb);
+            for (int b = 0; b < nb; ++b) B.col(b) = P.restrict(Eigen::VectorXd(G.col(b)));
+            const Eigen::MatrixXd WB = d.weight.asDiagonal() * B;
+            const Eigen::VectorXd y = WB * (B.transpose() * WB).partialPivLu().solve(dV);
+            for (int v = 0; v < c_.n_vertices(); ++v) X[v] += P.displacement(y, v);
+        }
+    }
+
+    template <class Merit> bool acceptable(const std::vector<Vec3>& X, Merit&& merit, double bound) {
+        return find_degenerate_facet(c_, X).first < 0 && merit(X) <= bound;
+    }
+
+    /// The smallest corner angle of any facet at X, degrees.
+    double min_facet_angle(const std::vector<Vec3>& X) const {
+        double lo = 180;
+        for (const Surface& s : c_.surfaces())
+            for (const Tri& t : s.triangles)
+                for (int k = 0; k < 3; ++k) {
+                    const Vec3 u = X[t[(k + 1) % 3]] - X[t[k]], w = X[t[(k + 2) % 3]] - X[t[k]];
+                    lo = std::min(lo, std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / M_PI);
+                }
+        return lo;
+    }
+
+    double energy_at(const std::vector<Vec3>& X) const {
+        double e = 0;
+        for (const Surface& s : c_.surfaces())
+            for (const Tri& t : s.triangles) e += 0.5 * s.density(area_vector2(X, t));
+        return e;
+    }
+
+    static constexpr int kReuse = 8;       ///< steps per factorisation at the largest tau
+    /// Anderson's extrapolations may not shrink the smallest facet angle below this fraction
+    /// of the one minimize started from (the plain steps are the scheme's own and keep theirs).
+    static constexpr double kAngleKept = 0.5;
+    /// Below this smallest facet angle (degrees) minimize stops: the mesh is collapsing.
+    static constexpr double kDegenerateAngle = 1.0;
+    double min_angle_ = 0;
+    int steps_on_factor_ = 0;
+    bool has_factor_ = false;
+    Cluster& c_;
+    const MinimizeOptions& o_;
+    double R2_ = 1, tau_ = 1;
+    bool all_walls_flat_ = true;
+    StepSystem system_;
+    Anderson anderson_{8};
+};
+
+} // namespace
+
+EquilibriumState equilibrium_state(const Cluster& c) {
+    const PositionBasis P(c);
+    return balance(first_variation(c, P, pair_geometry(c)));
+}
+
+MinimizeResult minimize(Cluster& c, const MinimizeOptions& options) {
+    check(options);
+    if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
+        throw GeometryError("minimize: " + facet_name(s, f) + " has zero area");
+    const std::vector<Vec3> X0 = c.positions();
+    try {
+        return Minimizer(c, options).run();
+    } catch (const std::exception&) {
+        c.set_positions(X0);
+        throw;
+    }
+}
+
+} // namespace froth

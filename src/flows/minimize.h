@@ -1,0 +1,73 @@
+#pragma once
+/// Static equilibria at fixed volumes (Evolver's g + hessian; numerics.md "Static equilibria").
+///
+/// An equilibrium of E_gamma at the target volumes V*_b is a critical point of
+/// E - sum_b p_b (V_b - V*_b): grad E(X) = sum_b p_b grad V_b(X) in the directions the walls
+/// allow, with p_b the pressure of body b relative to the outside. minimize() reaches it by the
+/// seed's mean curvature step (3.7)/(3.10) with the volumes as constraints, whose Lagrange
+/// multipliers are the pressures:
+///
+///   [ T^T (A_gamma + 1/tau sum_i m_iv omega_iv omega_iv^T) T    T^T G ] [ y ]   [ -T^T A_gamma X^m ]
+///   [ G^T T                                                      0    ] [ -p] = [ V* - V(X^m)      ]
+///
+/// X^{m+1} = X^m + T y, G = dV/dX at X^m (geometry.h body_volume_gradients), and tau growing
+/// without bound from step to step (the tau -> infinity limit is the Dirichlet problem on
+/// Gamma^m of Pinkall and Polthier). Testing the first row with y gives, for V(X^m) = V*,
+/// E(X^{m+1}) <= E(X^m) for every tau (the seed's Theorem 3.2 proof; the constraint adds
+/// p . G^T dX = 0), so the iteration is monotone; a step that would collapse a facet or raise
+/// the energy by more than its volume correction explains is rejected and tau shrinks. The
+/// BGN tangential structure of the step keeps the mesh as good as the flows do.
+
+#include "mesh/cluster.h"
+
+#include <string>
+#include <vector>
+
+namespace froth {
+
+/// The pressures of the bodies and how far the cluster is from an equilibrium.
+struct EquilibriumState {
+    /// The least-squares multipliers p of grad E ~ sum_b p_b grad V_b, in the norm
+    /// sum_v |r_v|^2 / m_v (m_v the lumped vertex mass) over the directions the walls allow; at
+    /// an equilibrium the exact multipliers (a sphere of radius R with sigma = 1: 2 / R + O(h^2)).
+    std::vector<double> pressures;
+    /// The RMS over the films of the unbalanced force density r_v / m_v,
+    /// r = grad E - sum_b p_b grad V_b, relative to sigma_mean / R (sigma_mean = E / area,
+    /// R = sqrt(area / 4 pi)): sqrt(sum_v |T_v^T r_v|^2 / m_v / area) R / sigma_mean.
+    double residual = 0;
+};
+/// \throw GeometryError for a degenerate facet, or what a user's wall function throws.
+EquilibriumState equilibrium_state(const Cluster& c);
+
+struct MinimizeOptions {
+    double tol = 1e-6;        ///< stop when residual <= tol and the volumes are exact
+    int max_iterations = 1000;
+    /// The first step's tau relative to R^2 (R as above); grows by tau_growth per accepted step.
+    double tau_start = 1e-2;
+    double tau_growth = 4;
+    /// The largest tau relative to R^2; from there on the steps are accelerated (Anderson).
+    double tau_max = 1e4;
+    /// Relative volume error |V_b - V*_b| / V*_b the result must reach to count as converged.
+    double volume_tol = 1e-12;
+};
+
+struct MinimizeResult {
+    double energy = 0;
+    std::vector<double> volumes, pressures;
+    double residual = 0;
+    double volume_error = 0; ///< max_b |V_b - V*_b| / V*_b
+    int iterations = 0;      ///< accepted steps
+    int rejected = 0;        ///< steps rejected (tau shrunk)
+    double wall_seconds = 0;
+    bool converged = false;
+    /// "converged", "max_iterations", "interrupted", or "stalled: <why>".
+    std::string stop_reason;
+};
+
+/// Moves c to an equilibrium at its target volumes (Cluster::target_volumes). Stops cleanly
+/// on Ctrl-C (core/interrupt.h) between steps with the last accepted state.
+/// \throw InvalidInput for bad options (the cluster unchanged); on any other throw (a wall
+/// function's error, a singular system) the cluster is restored to where it started.
+MinimizeResult minimize(Cluster& c, const MinimizeOptions& options);
+
+} // namespace froth
