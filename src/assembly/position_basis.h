@@ -34,6 +34,12 @@ class PositionBasis {
     void add_column_pair(SparseBuilder& M, int v, int col, const Eigen::Vector3d& u) const;
     /// T^T g for a full-coordinate vector g (3 per vertex).
     Eigen::VectorXd restrict(const Eigen::VectorXd& g) const;
+    /// d projected onto the directions vertex v may move in, T_v T_v^T d.
+    Eigen::Vector3d project_tangent(int v, const Eigen::Vector3d& d) const {
+        if (!constrained_[v]) return d;
+        const auto T = T_[v].leftCols(dim(v));
+        return T * (T.transpose() * d);
+    }
     /// The displacement of vertex v, T_v y_v, from the reduced solution.
     Eigen::Vector3d displacement(const Eigen::VectorXd& y, int v) const;
 

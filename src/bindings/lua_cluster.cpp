@@ -262,10 +262,12 @@ int l_step(lua_State* L) {
     const std::string flow = o.string("flow");
     const double tau = o.number("tau");
     const bool project = o.boolean("project", false);
+    const bool exact = o.boolean("exact_volumes", false);
     const FixedPointOptions fp = read_fixed_point(L, o, "step: fixed_point");
     o.finish();
     return guarded(L, [&] {
         h.stepper.set_fixed_point(fp);
+        h.stepper.set_exact_volumes(exact);
         const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau, project);
         push_step_report(L, r);
         return 1;
@@ -312,6 +314,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     e.output = o.string("output", "");
     e.history = o.string("history", "");
     e.project_onto_walls = o.boolean("project", false);
+    e.exact_volumes = o.boolean("exact_volumes", false);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
     e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;
     if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))
@@ -469,6 +472,8 @@ void push_step_report(lua_State* L, const StepReport& r) {
     set_integer(L, "fixed_point_iterations", r.fixed_point_iterations);
     set_number(L, "fixed_point_change", r.fixed_point_change);
     set_integer(L, "substeps", r.substeps);
+    set_integer(L, "volume_iterations", r.volume_iterations);
+    if (r.volume_iterations > 0) set_number(L, "volume_error", r.volume_error);
 }
 
 void register_cluster_type(lua_State* L) {

@@ -5,12 +5,15 @@
 #include "bindings/luax.h"
 #include "flows/minimize.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace froth::lua {
 namespace {
 
 ClusterHandle& self(lua_State* L) { return check<ClusterHandle>(L, 1, kClusterType); }
 
-/// c:minimize{tol, max_iterations, tau_start, tau_growth, volume_tol}
+/// c:minimize{tol, max_iterations, tau_start, tau_growth, tau_max, volume_tol}
 int l_minimize(lua_State* L) {
     ClusterHandle& h = self(L);
     Options o(L, 2, "minimize", true);
@@ -73,7 +76,28 @@ int l_target_volumes(lua_State* L) {
     return 1;
 }
 
+/// c:refine() -> {vertices, facets, volume_change}
+int l_refine(lua_State* L) {
+    ClusterHandle& h = self(L);
+    return guarded(L, [&] {
+        const std::vector<double> before = body_volumes(h.cluster);
+        Cluster refined = refine(h.cluster); // throws before anything changes
+        const std::vector<double> after = body_volumes(refined);
+        double change = 0;
+        for (std::size_t b = 0; b < after.size(); ++b)
+            change = std::max(change, std::abs(after[b] - before[b]) / before[b]);
+        h.cluster = std::move(refined);
+        h.stepper.reset();
+        lua_createtable(L, 0, 3);
+        set_integer(L, "vertices", h.cluster.n_vertices());
+        set_integer(L, "facets", h.cluster.n_facets());
+        set_number(L, "volume_change", change);
+        return 1;
+    });
+}
+
 const luaL_Reg methods[] = {
+    {"refine", l_refine},
     {"minimize", l_minimize},
     {"pressures", l_pressures},
     {"set_volume", l_set_volume},

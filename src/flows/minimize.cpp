@@ -2,6 +2,8 @@
 // growing without bound (minimize.h has the equations).
 #include "flows/minimize.h"
 
+#include "flows/anderson.h"
+
 #include "assembly/flow_systems.h"
 #include "core/errors.h"
 #include "core/format.h"
@@ -169,34 +171,6 @@ Eigen::VectorXd constrained_step(StepSystem& K, bool fresh, const Variation& d,
     return U.col(0) + U.rightCols(nb) * p;
 }
 
-/// Anderson acceleration (type II, the last `depth` differences) of the fixed-point map
-/// x -> x + f(x) that the steps at the largest tau are: it turns the slow, nearly linear
-/// convergence of the tangential mesh motion into a few iterations. Plain steps otherwise.
-class Anderson {
-  public:
-    explicit Anderson(int depth) : depth_(depth) {}
-    void reset() { dx_.clear(), df_.clear(), have_last_ = false; }
-    /// The next iterate from x and f = step(x) - x.
-    Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& f) {
-        if (have_last_) {
-            dx_.push_back(x - x_last_), df_.push_back(f - f_last_);
-            if (static_cast<int>(dx_.size()) > depth_) dx_.erase(dx_.begin()), df_.erase(df_.begin());
-        }
-        x_last_ = x, f_last_ = f, have_last_ = true;
-        if (dx_.empty()) return x + f;
-        Eigen::MatrixXd DF(f.size(), df_.size()), DX(f.size(), dx_.size());
-        for (std::size_t j = 0; j < df_.size(); ++j) DF.col(j) = df_[j], DX.col(j) = dx_[j];
-        const Eigen::VectorXd gamma = DF.colPivHouseholderQr().solve(f);
-        return x + f - (DX + DF) * gamma;
-    }
-
-  private:
-    int depth_;
-    std::vector<Eigen::VectorXd> dx_, df_;
-    Eigen::VectorXd x_last_, f_last_;
-    bool have_last_ = false;
-};
-
 Eigen::VectorXd flatten(const std::vector<Vec3>& X) {
     return Eigen::Map<const Eigen::VectorXd>(X[0].data(), 3 * static_cast<Eigen::Index>(X.size()));
 }
@@ -215,7 +189,7 @@ class Minimizer {
         R2_ = area / (4 * M_PI);
         tau_ = o.tau_start * R2_;
         for (const WallPtr& w : c.walls()) all_walls_flat_ = all_walls_flat_ && w->is_flat();
-        min_angle_ = min_facet_angle(c.positions());
+        for (double a : surface_areas(c)) initial_area_ += a;
     }
 
     MinimizeResult run() {
@@ -244,13 +218,20 @@ class Minimizer {
                 break;
             }
             if (rejects_in_row > 40) {
-                r.stop_reason = "stalled: no step of tau >= " + fmt(tau_) +
-                                " lowers the energy (residual " + fmt(r.residual) + ")";
+                r.stop_reason = "stalled: no step of tau >= " + fmt(tau_ / R2_) +
+                                " R^2 lowers the energy (residual " + fmt(r.residual) + ")";
                 break;
             }
             if (try_step(P, g, d, V)) {
                 ++r.iterations, rejects_in_row = 0;
                 tau_ = std::min(tau_ * o_.tau_growth, o_.tau_max * R2_);
+                double area = 0;
+                for (double a : surface_areas(c_)) area += a;
+                if (area < 1e-6 * initial_area_) {
+                    r.stop_reason = "topology: the films have shrunk to " + fmt(area / initial_area_) +
+                                    " of their area (nothing holds them: no body, no wall)";
+                    break;
+                }
                 const double angle = min_facet_angle(c_.positions());
                 if (angle < kDegenerateAngle) {
                     r.stop_reason = "topology: a facet angle fell to " + fmt(angle) +
@@ -264,8 +245,14 @@ class Minimizer {
                 anderson_.reset();
             }
         }
+        if (!r.converged) { // the state after the last accepted step
+            const PositionBasis P(c_);
+            const EquilibriumState s = balance(first_variation(c_, P, pair_geometry(c_)));
+            r.residual = s.residual, r.pressures = s.pressures;
+        }
         r.energy = energy(c_);
         r.volumes = body_volumes(c_);
+        r.volume_error = volume_error(r.volumes, c_.target_volumes());
         r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         return r;
     }
@@ -318,7 +305,8 @@ class Minimizer {
             std::vector<Vec3> A = unflatten(anderson_.next(x, flatten(X) - x));
             if (!all_walls_flat_) project_onto_walls_of(c_, A);
             restore_volumes(P, d, A);
-            if (acceptable(A, merit, bound) && min_facet_angle(A) >= kAngleKept * min_angle_) {
+            if (acceptable(A, merit, bound) &&
+                min_facet_angle(A) >= kAngleKept * min_facet_angle(c_.positions())) {
                 c_.set_positions(std::move(A));
                 return true;
             }
@@ -338,7 +326,7 @@ class Minimizer {
     /// projection that keeps Anderson's mixed iterates (and every other) volume exact.
     void restore_volumes(const PositionBasis& P, const Variation& d, std::vector<Vec3>& X) const {
         const int nb = c_.n_bodies();
-        for (int it = 0; it < 4 && nb > 0; ++it) {
+        for (int it = 0; it < 12 && nb > 0; ++it) {
             const std::vector<double> V = body_volumes(c_, X);
             Eigen::VectorXd dV(nb);
             for (int b = 0; b < nb; ++b) dV[b] = c_.target_volumes()[b] - V[b];
@@ -377,11 +365,11 @@ class Minimizer {
 
     static constexpr int kReuse = 8;       ///< steps per factorisation at the largest tau
     /// Anderson's extrapolations may not shrink the smallest facet angle below this fraction
-    /// of the one minimize started from (the plain steps are the scheme's own and keep theirs).
+    /// of the current one in one step (the plain steps are the scheme's own and keep theirs).
     static constexpr double kAngleKept = 0.5;
     /// Below this smallest facet angle (degrees) minimize stops: the mesh is collapsing.
     static constexpr double kDegenerateAngle = 1.0;
-    double min_angle_ = 0;
+    double initial_area_ = 0;
     int steps_on_factor_ = 0;
     bool has_factor_ = false;
     Cluster& c_;
@@ -395,6 +383,8 @@ class Minimizer {
 } // namespace
 
 EquilibriumState equilibrium_state(const Cluster& c) {
+    if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
+        throw GeometryError("pressures: " + facet_name(s, f) + " has zero area");
     const PositionBasis P(c);
     return balance(first_variation(c, P, pair_geometry(c)));
 }

@@ -60,7 +60,8 @@ struct MinimizeResult {
     int rejected = 0;        ///< steps rejected (tau shrunk)
     double wall_seconds = 0;
     bool converged = false;
-    /// "converged", "max_iterations", "interrupted", or "stalled: <why>".
+    /// "converged", "max_iterations", "interrupted", "stalled: <why>", or "topology: <what>"
+    /// (a facet angle below 1 degree, or films without bodies shrinking away).
     std::string stop_reason;
 };
 

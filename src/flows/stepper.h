@@ -51,6 +51,11 @@ struct StepReport : Report {
     /// Steps of the scheme this step was made of: 1, or more when an r > 1 iteration failed
     /// to converge and the step was halved (FixedPointOptions::max_halvings).
     int substeps = 1;
+    /// Volume-exact surface diffusion only (0 otherwise): the linear solves of the fixed point
+    /// for the step's averaged normals (assembly/exact_volumes.h), and the largest relative
+    /// deviation |V_b - V*_b| / V*_b of a body from its target volume after the step.
+    int volume_iterations = 0;
+    double volume_error = 0;
 };
 
 /// The nonlinear iteration for r > 1 (Newton's method on (3.9), numerics.md "Anisotropic
@@ -76,9 +81,17 @@ class TimeStepper {
     /// \throw InvalidInput (tau), GeometryError (degenerate facets before or after the step),
     ///        SolverError (singular or non-finite system), ConvergenceError (r > 1 iteration).
     StepReport step(Cluster& c, Flow flow, double tau, bool project_onto_walls = false);
+    /// Forgets every cached pattern and factorisation (after the cluster's mesh was replaced).
+    void reset();
     /// \throw InvalidInput unless tol > 0, max_iterations >= 2 and max_halvings in 0..20.
     void set_fixed_point(FixedPointOptions o);
     const FixedPointOptions& fixed_point() const { return fixed_point_; }
+    /// With exact, surface diffusion keeps every body at its target volume (the
+    /// structure-preserving step of assembly/exact_volumes.h, 5-13 solves per step); without
+    /// (the default), it runs the seed's linear scheme (3.6)/(3.8), which loses O(tau^2) of
+    /// volume per step.
+    void set_exact_volumes(bool exact) { exact_volumes_ = exact; }
+    bool exact_volumes() const { return exact_volumes_; }
 
   private:
     struct System;
@@ -94,7 +107,17 @@ class TimeStepper {
     /// Newton's method for the r > 1 system (3.9), from X^m to convergence; returns z.
     Eigen::VectorXd solve_newton(Cluster& c, Flow flow, double tau, const PositionBasis& P,
                                  StepReport& report);
+    /// Volume-exact surface diffusion: the fixed point over the averaged normals; returns z.
+    Eigen::VectorXd solve_exact_volumes(Cluster& c, double tau, const PositionBasis& P,
+                                        StepReport& report);
     FixedPointOptions fixed_point_;
+    bool exact_volumes_ = false;
+    // Set during a volume-exact step: the pair weights and kappa rows assemble() uses.
+    const PairGeometry* weights_ = nullptr;
+    const Eigen::VectorXd* kappa_rhs_ = nullptr;
+    // The last volume-exact step's displacement per unit tau and the positions it ended at: the
+    // next step starts its fixed point from it when it starts where that one ended.
+    std::vector<Vec3> last_velocity_, last_end_;
     int revision_ = -1; ///< the cluster's assembly_revision() the patterns were built for
     std::unique_ptr<System> mcf_, sd_;
     std::unique_ptr<KappaBasis> Z_;

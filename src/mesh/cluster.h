@@ -201,6 +201,14 @@ class Cluster {
     int assembly_revision_ = 0;
 };
 
+/// Evolver's `r`: every facet split into four at its edge midpoints (one midpoint per edge, so
+/// triple lines, quadruple points and bodies are kept; midpoints of free boundary edges are
+/// projected onto the walls both ends lie on). Tensions, anisotropies, mobilities, walls, time
+/// and the reference and target volumes are carried over; the vertices of c keep their ids.
+/// Volumes are unchanged except where a curved wall's lid gains the projected midpoints.
+/// \throw what the Cluster constructor throws (it should not for a valid c).
+Cluster refine(const Cluster& c);
+
 /// Removes from spec the facets with all three corners on one of spec.walls (within 1e-6 of
 /// the mean edge length): the faces of a solid that rest on a wall are its lids, not films.
 /// Surfaces left without facets are removed (and from their bodies), unused vertices dropped

@@ -132,6 +132,7 @@ class Run {
     /// the cluster as it was. Bad input still throws.
     std::optional<StepReport> try_step(double tau) {
         try {
+            stepper_.set_exact_volumes(o_.exact_volumes);
             return stepper_.step(c_, o_.flow, tau, o_.project_onto_walls);
         } catch (const InvalidInput&) {
             throw;

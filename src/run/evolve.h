@@ -35,6 +35,9 @@ struct EvolveOptions {
     WatchOptions watch;
     /// The r > 1 iteration of every step (flows/stepper.h).
     FixedPointOptions fixed_point;
+    /// Surface diffusion holds the bodies at their target volumes exactly (TimeStepper::
+    /// set_exact_volumes); false runs the seed's linear scheme.
+    bool exact_volumes = false;
 };
 
 struct EvolveResult {

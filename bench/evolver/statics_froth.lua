@@ -1,0 +1,46 @@
+-- froth side of the statics benchmark (statics.sh): one static equilibrium at fixed volumes by
+-- c:minimize{tol}, from boxes meshed by gmsh at size h; prints one line per (h, tol) with the
+-- vertices, minimize's iterations and seconds, the area and its relative error against the
+-- reference, and the volume error. The problems (the same boxes as the Evolver datafiles):
+--   db11    two unit cubes side by side (two_cubes.fe), volumes (1, 1): the standard double
+--           bubble, area 3 (9 pi)^(1/3) = 9.1394216780693
+--   db12    the same cubes with c:set_volume(2, 2), volumes (1, 2): the standard double bubble
+--           of (1, 2), area 11.8542931280002 (double_bubble_exact.lua)
+--   triple  the unit cubes [0,1]^3, [1,2]x[0,1]x[0,1] and the slab [0,2]x[0,1]x[1,1.5] on them
+--           (three_cells.fe), volumes (1, 1, 1): the standard triple bubble; no closed form,
+--           reference 13.1281682 = Evolver's levels 5 and 6 extrapolated (statics.sh)
+--   froth bench/evolver/statics_froth.lua problem=db11 h=0.1 tol=1e-2
+-- h and tol may be comma lists (h=0.1,0.08 tol=1e-1,1e-2): every pair runs in this process,
+-- each from a fresh mesh (the search that chose statics.sh's h and tol). statics.sh times one
+-- pair per process, so the process's seconds include startup and meshing.
+local opts = require("froth.script").options({problem = "db11", h = 0.1, tol = 1e-2,
+                                              max_iterations = 1000, ref = 0}, arg)
+local function box(x, y, z, sx, sy, sz) return {"box", min = {x, y, z}, size = {sx, sy, sz}} end
+local problems = {
+  db11 = {ref = 3 * (9 * math.pi) ^ (1 / 3), solids = {box(0, 0, 0, 1, 1, 1), box(1, 0, 0, 1, 1, 1)}},
+  db12 = {ref = 11.8542931280002, solids = {box(0, 0, 0, 1, 1, 1), box(1, 0, 0, 1, 1, 1)},
+          volumes = {[2] = 2}},
+  triple = {ref = 13.1281682, solids = {box(0, 0, 0, 1, 1, 1), box(1, 0, 0, 1, 1, 1),
+                                          box(0, 0, 1, 2, 1, 0.5)}},
+}
+local p = problems[opts.problem]
+if not p then error("statics_froth.lua: problem must be db11, db12 or triple, got " .. opts.problem) end
+local ref = opts.ref ~= 0 and opts.ref or p.ref
+
+local function list(v)
+  local t = {}
+  for x in tostring(v):gmatch("[^,]+") do t[#t + 1] = assert(tonumber(x), "bad number " .. x) end
+  return t
+end
+
+print("FROTH problem  h      tol     vertices  iterations  minimize_s  area             error       volume_error  stop")
+for _, h in ipairs(list(opts.h)) do
+  for _, tol in ipairs(list(opts.tol)) do
+    local c = froth.fragment{solids = p.solids, h = h}
+    for b, v in pairs(p.volumes or {}) do c:set_volume(b, v) end
+    local r = c:minimize{tol = tol, max_iterations = opts.max_iterations}
+    print(("FROTH %-7s %-6g %-7g %8d  %10d  %10.3f  %.13f  %10.3e  %12.2e  %s"):format(opts.problem,
+          h, tol, c:info().vertices, r.iterations, r.wall_s, r.energy, (r.energy - ref) / ref,
+          r.volume_error, r.stop_reason))
+  end
+end

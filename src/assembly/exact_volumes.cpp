@@ -1,0 +1,59 @@
+// The weights and volume right-hand side of the volume-exact surface diffusion step
+// (exact_volumes.h has the equations).
+#include "assembly/exact_volumes.h"
+
+#include <Eigen/Dense>
+
+namespace froth {
+namespace {
+
+/// chi_bk: the sign (+1 outward, -1 inward, 0 absent) of pair k's surface in body b.
+std::vector<std::vector<int>> body_surface_signs(const Cluster& c) {
+    std::vector<std::vector<int>> sign(c.n_bodies(), std::vector<int>(c.n_surfaces(), 0));
+    for (int b = 0; b < c.n_bodies(); ++b)
+        for (const BodyFace& f : c.bodies()[b].faces) sign[b][f.surface] = f.sign;
+    return sign;
+}
+
+} // namespace
+
+std::vector<Vec3> simpson_pair_weights(const Cluster& c, const std::vector<Vec3>& dX) {
+    const auto& X = c.positions();
+    std::vector<Vec3> w(c.n_pairs(), Vec3::Zero());
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles) {
+            const Vec3 e1 = X[t[1]] - X[t[0]], e2 = X[t[2]] - X[t[0]];
+            const Vec3 d1 = dX[t[1]] - dX[t[0]], d2 = dX[t[2]] - dX[t[0]];
+            const Vec3 mean = e1.cross(e2) + (e1.cross(d2) + d1.cross(e2)) / 2 + d1.cross(d2) / 3;
+            for (int v : t) w[c.pair_index(v, i)] += mean / 6;
+        }
+    return w;
+}
+
+PairGeometry with_pair_weights(PairGeometry g, const std::vector<Vec3>& w) {
+    for (std::size_t k = 0; k < w.size(); ++k) g.omega[k] = w[k] / g.mass[k];
+    return g;
+}
+
+Eigen::VectorXd volume_rhs(const Cluster& c, const PairGeometry& g, const Eigen::VectorXd& swept) {
+    const int nb = c.n_bodies();
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(c.n_pairs());
+    if (nb == 0) return r;
+    const auto sign = body_surface_signs(c);
+    Eigen::MatrixXd S = Eigen::MatrixXd::Zero(nb, nb);
+    for (int k = 0; k < c.n_pairs(); ++k)
+        for (int a = 0; a < nb; ++a)
+            for (int b = 0; b < nb; ++b)
+                S(a, b) += sign[a][c.pair_surface(k)] * sign[b][c.pair_surface(k)] * g.mass[k];
+    const Eigen::VectorXd coef = S.ldlt().solve(swept);
+    for (int k = 0; k < c.n_pairs(); ++k)
+        for (int b = 0; b < nb; ++b) r[k] += coef[b] * sign[b][c.pair_surface(k)] * g.mass[k];
+    return r;
+}
+
+void add_kappa_rhs(const KappaBasis& Z, const Eigen::VectorXd& r, int offset, Eigen::VectorXd& rhs) {
+    for (int k = 0; k + 1 < static_cast<int>(Z.start.size()); ++k)
+        for (int x = Z.start[k]; x < Z.start[k + 1]; ++x) rhs[offset + Z.col[x]] += Z.val[x] * r[k];
+}
+
+} // namespace froth

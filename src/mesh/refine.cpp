@@ -1,0 +1,76 @@
+// Evolver's `r`: every facet into four at its edge midpoints (refine in cluster.h).
+#include "core/errors.h"
+#include "mesh/cluster.h"
+
+#include <map>
+
+namespace froth {
+namespace {
+
+/// The midpoint of edge (a, b) on the walls both ends are attached to (alternating
+/// projections on a corner), so a refined film still meets its walls.
+Vec3 wall_midpoint(const Cluster& c, int a, int b) {
+    Vec3 m = 0.5 * (c.position(a) + c.position(b));
+    std::vector<int> common;
+    const std::vector<int> wa = c.vertex_walls(a), wb = c.vertex_walls(b);
+    for (int w : wa)
+        for (int u : wb)
+            if (w == u) common.push_back(w);
+    if (common.empty()) return m;
+    bool flat = true;
+    for (int w : common) flat = flat && c.walls()[w]->is_flat();
+    if (flat && common.size() == 1) return m; // already on the plane
+    for (int pass = 0; pass < (common.size() > 1 ? 20 : 1); ++pass)
+        for (int w : common) m = c.walls()[w]->project(m);
+    return m;
+}
+
+} // namespace
+
+Cluster refine(const Cluster& c) {
+    ClusterSpec spec;
+    spec.vertices = c.positions();
+    spec.walls = c.walls();
+    // Edges shared by surfaces (triple lines) get one midpoint: keyed by the sorted pair.
+    std::map<std::pair<int, int>, int> midpoint;
+    std::map<std::pair<int, int>, bool> boundary;
+    for (const BoundaryEdge& e : c.boundary_edges()) boundary[{std::min(e.a, e.b), std::max(e.a, e.b)}] = true;
+    const auto mid = [&](int a, int b) {
+        const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+        auto [it, fresh] = midpoint.try_emplace(key, static_cast<int>(spec.vertices.size()));
+        if (fresh)
+            spec.vertices.push_back(boundary.count(key) ? wall_midpoint(c, a, b)
+                                                        : Vec3(0.5 * (c.position(a) + c.position(b))));
+        return it->second;
+    };
+    for (const Surface& s : c.surfaces()) {
+        ClusterSpec::Surface out;
+        out.sigma = s.sigma;
+        for (const Tri& t : s.triangles) {
+            const int m01 = mid(t[0], t[1]), m12 = mid(t[1], t[2]), m20 = mid(t[2], t[0]);
+            out.triangles.push_back({t[0], m01, m20});
+            out.triangles.push_back({m01, t[1], m12});
+            out.triangles.push_back({m20, m12, t[2]});
+            out.triangles.push_back({m01, m12, m20});
+        }
+        spec.surfaces.push_back(std::move(out));
+    }
+    for (const Body& b : c.bodies()) {
+        std::vector<int> ids;
+        for (const BodyFace& f : b.faces) ids.push_back(f.surface);
+        spec.bodies.push_back(std::move(ids));
+    }
+    Cluster r(std::move(spec));
+    if (r.n_bodies() != c.n_bodies())
+        throw TopologyError("refine: the refined cluster has " + std::to_string(r.n_bodies()) +
+                            " bodies, the original " + std::to_string(c.n_bodies()));
+    for (int i = 0; i < c.n_surfaces(); ++i) {
+        r.set_anisotropy(i, c.surface(i).gamma);
+        r.set_mobility(i, c.surface(i).beta);
+    }
+    r.set_time(c.time());
+    r.set_volume_references(c.initial_volumes(), c.target_volumes());
+    return r;
+}
+
+} // namespace froth
