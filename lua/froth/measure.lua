@@ -130,4 +130,42 @@ function M.wulff_deviation(c, gamma, opts)
   return dev, r
 end
 
+--- The standard double bubble of volumes V1 <= V2 with sigma = 1 (two spherical caps of radii
+--- r1 <= r2 and a middle cap of radius r3 = r1 r2 / (r2 - r1), meeting at 120 degrees, so the
+--- centres are d = sqrt(r1^2 + r2^2 - r1 r2) apart). Returns {area, r1, r2, r3, p1 = 2 / r1,
+--- p2 = 2 / r2}. The junction plane is at a = (d^2 + r1^2 - r2^2) / (2 d) from centre 1, its
+--- circle of radius rho = sqrt(r1^2 - a^2); bubble 1 is sphere 1's cap of height r1 + a plus the
+--- lens of height h3 = r3 - sqrt(r3^2 - rho^2), bubble 2 sphere 2's cap of height r2 + d - a
+--- minus the lens. The ratio r2 / r1 is found by bisection on V2 / V1, then the scale.
+--- Equal volumes give 3 (9 pi)^(1/3) V^(2/3).
+function M.standard_double_bubble(V1, V2)
+  if V1 > V2 then V1, V2 = V2, V1 end
+  local pi = math.pi
+  local function cap(R, h) return pi * h * h * (3 * R - h) / 3 end
+  local function shape(k) -- r1 = 1, r2 = k
+    local d = math.sqrt(1 + k * k - k)
+    local a = (d * d + 1 - k * k) / (2 * d)
+    local rho = math.sqrt(1 - a * a)
+    local h1, h2 = 1 + a, k + d - a
+    local r3, h3 = math.huge, 0
+    if k > 1 then
+      r3 = k / (k - 1)
+      h3 = r3 - math.sqrt(r3 * r3 - rho * rho)
+    end
+    local lens = k > 1 and cap(r3, h3) or 0
+    local area = 2 * pi * (h1 + k * h2) + (k > 1 and 2 * pi * r3 * h3 or pi * rho * rho)
+    return cap(1, h1) + lens, cap(k, h2) - lens, area, r3
+  end
+  local lo, hi = 1, 1e3
+  for _ = 1, 200 do
+    local mid = 0.5 * (lo + hi)
+    local a, b = shape(mid)
+    if b / a < V2 / V1 then lo = mid else hi = mid end
+  end
+  local k = 0.5 * (lo + hi)
+  local v1, _, area, r3 = shape(k)
+  local s = (V1 / v1) ^ (1 / 3)
+  return {area = area * s * s, r1 = s, r2 = k * s, r3 = r3 * s, p1 = 2 / s, p2 = 2 / (k * s)}
+end
+
 return M

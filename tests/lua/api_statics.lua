@@ -1,0 +1,143 @@
+-- Statics: c:minimize, c:pressures, c:set_volume, c:target_volumes, c:refine, and volume-exact
+-- surface diffusion (exact_volumes = true). Exact answers: the standard double bubble
+-- (froth.measure.standard_double_bubble), spheres (pressure 2 / R), flat refinement.
+local T = require("froth.test")
+local M = require("froth.measure")
+if not froth.has("gmsh") then
+  T.assert_equal(froth.double_bubble, nil, "no double_bubble without gmsh")
+  return T.summary()
+end
+
+local function positions(c)
+  local X = {}
+  for v = 1, c:info().vertices do X[v] = c:vertex(v) end
+  return X
+end
+local function same(c, X)
+  for v = 1, c:info().vertices do
+    local x = c:vertex(v)
+    if x[1] ~= X[v][1] or x[2] ~= X[v][2] or x[3] ~= X[v][3] then return false end
+  end
+  return true
+end
+
+-- minimize: equal double bubble, against the standard double bubble of its volumes.
+local c = froth.double_bubble{h = 0.12}
+local r = c:minimize{}
+local V = c:volumes()
+local exact = M.standard_double_bubble(V[1], V[2])
+T.assert_true(r.converged, "equal double bubble converges", r.stop_reason)
+T.assert_true(r.residual <= 1e-6, "residual <= tol", tostring(r.residual))
+T.assert_true(r.volume_error <= 1e-12, "volumes exact to 1e-12", tostring(r.volume_error))
+for b = 1, 2 do
+  T.assert_true(T.rel(V[b], c:target_volumes()[b]) <= 1e-12, "body volume = target")
+end
+T.assert_true(T.rel(r.energy, exact.area) <= 2e-3, "area within 0.2% of the exact double bubble",
+              ("%.6f vs %.6f"):format(r.energy, exact.area))
+T.assert_true(r.energy >= exact.area * (1 - 1e-4), "an inscribed polyhedron's area is not below it much")
+T.assert_true(T.rel(r.pressures[1], exact.p1) <= 0.01 and T.rel(r.pressures[2], exact.p2) <= 0.01,
+              "pressures 2 / r within 1%", ("%.5f %.5f vs %.5f"):format(r.pressures[1], r.pressures[2], exact.p1))
+local a = c:report().angles
+T.assert_true(a.min >= 118 and a.max <= 122, "triple-line angles 118..122",
+              ("%.2f .. %.2f"):format(a.min, a.max))
+local p, res = c:pressures()
+T.assert_near(p[1], r.pressures[1], 1e-12, "c:pressures() after minimize = its pressures")
+T.assert_true(res <= 1e-6, "c:pressures() residual")
+
+-- Unequal volumes by set_volume: the smaller bubble has the larger pressure, 2 / r1.
+local u = froth.double_bubble{h = 0.12}
+local v1 = u:volumes()[1]
+u:set_volume(2, 2 * v1)
+T.assert_near(u:target_volumes()[2], 2 * v1, 1e-15, "target_volumes after set_volume")
+local ru = u:minimize{}
+local eu = M.standard_double_bubble(v1, 2 * v1)
+T.assert_true(ru.converged, "unequal double bubble converges", ru.stop_reason)
+T.assert_true(T.rel(u:volumes()[2], 2 * v1) <= 1e-12, "body 2 reaches its target volume exactly")
+T.assert_true(T.rel(ru.energy, eu.area) <= 2e-3, "unequal area within 0.2%",
+              ("%.6f vs %.6f"):format(ru.energy, eu.area))
+T.assert_true(T.rel(ru.pressures[1], eu.p1) <= 0.01 and T.rel(ru.pressures[2], eu.p2) <= 0.01,
+              "unequal pressures 2 / r1, 2 / r2 within 1%",
+              ("%.5f %.5f vs %.5f %.5f"):format(ru.pressures[1], ru.pressures[2], eu.p1, eu.p2))
+
+-- Pressures converge at O(h^2) to 2 / R (R from the volume) on minimised spheres.
+local errors = {}
+for k, h in ipairs{0.3, 0.15} do
+  local s = froth.sphere{R = 1, h = h}
+  s:minimize{}
+  local R = (3 * s:volumes()[1] / (4 * math.pi)) ^ (1 / 3)
+  errors[k] = math.abs(s:pressures()[1] * R / 2 - 1)
+end
+T.assert_true(errors[2] < errors[1] / 2.5, "sphere pressure error falls like h^2",
+              ("%.3e -> %.3e"):format(errors[1], errors[2]))
+
+-- A drop on a plane becomes a half sphere meeting it at 90 degrees; the volume is held.
+local d = froth.cube_on_plane{h = 0.15}
+local vd = d:volumes()[1]
+local rd = d:minimize{}
+local R = (3 * vd / (2 * math.pi)) ^ (1 / 3)
+T.assert_true(rd.converged and T.rel(d:volumes()[1], vd) <= 1e-12, "drop: converged, volume exact")
+T.assert_true(T.rel(rd.energy, 2 * math.pi * R * R) <= 5e-3, "drop: area of the half sphere",
+              ("%.5f vs %.5f"):format(rd.energy, 2 * math.pi * R * R))
+local ca = d:report().contact_angles
+T.assert_true(ca.min >= 88 and ca.max <= 92, "drop: contact angles 90 +- 2",
+              ("%.2f .. %.2f"):format(ca.min, ca.max))
+
+-- refine: facets x 4, vertices V + E, junctions kept, volumes unchanged (flat facets).
+local f = froth.triple_bubble{h = 0.3}
+local info, vols = f:info(), f:volumes()
+local q = f:refine()
+local after = f:info()
+T.assert_equal(q.facets, 4 * info.facets, "refine: facets x 4")
+T.assert_equal(after.facets, q.facets, "refine: info agrees")
+T.assert_equal(after.triple_lines, info.triple_lines, "refine: triple lines kept")
+T.assert_equal(after.quadruple_points, info.quadruple_points, "refine: quadruple points kept")
+T.assert_true(q.volume_change <= 1e-12, "refine: volumes unchanged", tostring(q.volume_change))
+for b = 1, #vols do T.assert_true(T.rel(f:volumes()[b], vols[b]) <= 1e-12, "refine: body volume") end
+local w = froth.cube_on_plane{h = 0.3}
+local vw = w:volumes()[1]
+T.assert_true(w:refine().volume_change <= 1e-12 and T.rel(w:volumes()[1], vw) <= 1e-12,
+              "refine on a plane: volume unchanged")
+T.assert_true(w:report().wall_drift <= 1e-12, "refine on a plane: rim on the wall")
+local sw = froth.drop_on_sphere_wall{h = 0.2}
+local qs = sw:refine()
+T.assert_true(sw:report().wall_drift <= 1e-9, "refine on a sphere wall: midpoints projected onto it")
+T.assert_true(qs.volume_change > 0 and qs.volume_change < 1e-2, "refine on a sphere wall: volume change reported",
+              tostring(qs.volume_change))
+
+-- Volume-exact surface diffusion: every step exact to 1e-12, energy non-increasing for
+-- tau = 1e-4 ... 10; the seed's scheme (default) loses volume.
+for _, tau in ipairs{1e-4, 1e-2, 1, 10} do
+  local s = froth.double_bubble{h = 0.25, split = 0.3}
+  local V0 = s:volumes()
+  local st = s:step{flow = "sd", tau = tau, exact_volumes = true}
+  local V1 = s:volumes()
+  T.assert_true(T.rel(V1[1], V0[1]) <= 1e-12 and T.rel(V1[2], V0[2]) <= 1e-12,
+                ("exact sd tau = %g: volumes to 1e-12"):format(tau), st.volume_error)
+  T.assert_true(st.energy <= st.energy_before, ("exact sd tau = %g: energy does not rise"):format(tau))
+  T.assert_true(st.volume_iterations >= 2, "exact sd reports its solves")
+end
+local e = froth.double_bubble{h = 0.25, split = 0.3}
+local E0 = e:volumes()
+local re = e:evolve{flow = "sd", tau = 1e-3, steps = 100, exact_volumes = true, progress = false}
+T.assert_true(T.rel(e:volumes()[1], E0[1]) <= 1e-10 and T.rel(e:volumes()[2], E0[2]) <= 1e-10,
+              "exact sd: volumes to 1e-10 over 100 steps", tostring(re.volume_loss))
+T.assert_true(re.max_energy_increase <= 0, "exact sd: energy non-increasing over 100 steps")
+local l = froth.double_bubble{h = 0.25, split = 0.3}
+local rl = l:evolve{flow = "sd", tau = 1e-3, steps = 100, progress = false}
+T.assert_true(rl.volume_loss > 1e-5, "the seed's scheme loses volume (the default)", tostring(rl.volume_loss))
+
+-- Bad input: a Lua error naming the value; the cluster unchanged.
+local b = froth.double_bubble{h = 0.3}
+local X = positions(b)
+T.check_error("minimize: tol", b.minimize, b, {tol = -1})
+T.check_error("unknown option 'tolerance'", b.minimize, b, {tolerance = 1})
+T.check_error("minimize: expected an option table", b.minimize, b, "fast")
+T.check_error("max_iterations", b.minimize, b, {max_iterations = 0})
+T.check_error("body 3", b.set_volume, b, 3, 1)
+T.check_error("must be positive and finite, got -1", b.set_volume, b, 1, -1)
+T.check_error("must be positive and finite, got nan", b.set_volume, b, 1, 0 / 0)
+T.check_error("expected a volume", b.set_volume, b, 1, "big")
+T.check_error("exact_volumes", b.step, b, {flow = "sd", tau = 1e-3, exact_volumes = "yes"})
+T.assert_true(same(b, X), "positions unchanged after the errors")
+T.assert_true(b:target_volumes()[1] == b:volumes()[1], "targets unchanged after the errors")
+T.summary()
