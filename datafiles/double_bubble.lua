@@ -2,7 +2,8 @@
 -- The unit ball cut into two half balls relaxes under isotropic surface diffusion to the
 -- standard double bubble: two spherical caps and a flat wall meeting at 120 degrees, the
 -- volumes 2 pi/3 each kept, the area decreasing to 3 (9 pi)^(1/3) V^(2/3) = 14.960902.
--- The seed: K = 3267 vertices, tau = 1e-3, T = 1, maximum volume loss 0.11%.
+-- The seed: K = 3267 vertices, tau = 1e-3, T = 1, maximum volume loss 0.11%. Then the same
+-- equilibrium by c:minimize{} (no dynamics, volumes exact), with the pressures.
 --
 -- Sample runs:  froth datafiles/double_bubble.lua
 --               froth datafiles/double_bubble.lua h=0.1 T=0.5 output=
@@ -39,4 +40,18 @@ print(("angles at the triple line: min %.2f  max %.2f  mean %.2f degrees (exact 
 print(("largest relative energy increase of a step: %.2e (stability: <= 0)"):format(worst_increase))
 if not opts.smoke and opts.output ~= "" then print("ParaView series: " .. opts.output) end
 
-return {result = result, exact = exact, worst_increase = worst_increase, cluster = c}
+-- 4. The same equilibrium without dynamics, as Surface Evolver finds it: minimize from the
+-- start at the exact initial volumes (c:minimize holds them to round-off).
+local m = froth.double_bubble{h = opts.h}
+local V0 = m:volumes()
+local eq = m:minimize{tol = opts.smoke and 1e-2 or 1e-6}
+local exact0 = 3 * (9 * math.pi) ^ (1 / 3) * ((V0[1] + V0[2]) / 2) ^ (2 / 3)
+print(("minimize: %s after %d iterations (%.2f s): area %.6f   error %+.3f%%   volume error %.1e")
+      :format(eq.stop_reason, eq.iterations, eq.wall_s, eq.energy,
+              100 * (eq.energy - exact0) / exact0, eq.volume_error))
+print(("          pressures %.5f %.5f   (2 / r of the exact caps: %.5f)")
+      :format(eq.pressures[1], eq.pressures[2],
+              require("froth.measure").standard_double_bubble(V0[1], V0[2]).p1))
+
+return {result = result, exact = exact, worst_increase = worst_increase, cluster = c,
+        equilibrium = eq}
