@@ -51,6 +51,51 @@ Eigen::VectorXd volume_rhs(const Cluster& c, const PairGeometry& g, const Eigen:
     return r;
 }
 
+namespace {
+
+Eigen::Matrix3d cross_matrix(const Vec3& u) {
+    Eigen::Matrix3d m;
+    m << 0, -u[2], u[1], u[2], 0, -u[0], -u[1], u[0], 0;
+    return m;
+}
+
+} // namespace
+
+void assemble_weight_derivative(const Cluster& c, const PositionBasis& P,
+                                const std::vector<Vec3>& dX, const Eigen::VectorXd& kappa,
+                                int size, SparseBuilder& M) {
+    M.begin(size, size);
+    const auto& X = c.positions();
+    for (int i = 0; i < c.n_surfaces(); ++i)
+        for (const Tri& t : c.surface(i).triangles) {
+            const Vec3 u1 = (X[t[1]] - X[t[0]]) / 2 + (dX[t[1]] - dX[t[0]]) / 3;
+            const Vec3 u2 = (X[t[2]] - X[t[0]]) / 2 + (dX[t[2]] - dX[t[0]]) / 3;
+            const Eigen::Matrix3d D[3] = {cross_matrix(u2 - u1), -cross_matrix(u2), cross_matrix(u1)};
+            for (int a = 0; a < 3; ++a) {
+                const double k = kappa[c.pair_index(t[a], i)] / 6;
+                for (int b = 0; b < 3; ++b) P.add_block(M, t[a], t[b], k * D[b]);
+            }
+        }
+    M.finish();
+}
+
+Eigen::VectorXd pair_sweep(const Cluster& c, const std::vector<Vec3>& w, const std::vector<Vec3>& dX) {
+    const auto sign = body_surface_signs(c);
+    Eigen::VectorXd swept = Eigen::VectorXd::Zero(c.n_bodies());
+    for (int v = 0; v < c.n_vertices(); ++v)
+        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
+            for (int b = 0; b < c.n_bodies(); ++b)
+                swept[b] += sign[b][c.pair_surface(k)] * w[k].dot(dX[v]);
+    return swept;
+}
+
+Eigen::VectorXd pair_kappa(const KappaBasis& Z, const Eigen::VectorXd& z, int offset) {
+    Eigen::VectorXd kappa = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(Z.start.size()) - 1);
+    for (int k = 0; k + 1 < static_cast<int>(Z.start.size()); ++k)
+        for (int x = Z.start[k]; x < Z.start[k + 1]; ++x) kappa[k] += Z.val[x] * z[offset + Z.col[x]];
+    return kappa;
+}
+
 void add_kappa_rhs(const KappaBasis& Z, const Eigen::VectorXd& r, int offset, Eigen::VectorXd& rhs) {
     for (int k = 0; k + 1 < static_cast<int>(Z.start.size()); ++k)
         for (int x = Z.start[k]; x < Z.start[k + 1]; ++x) rhs[offset + Z.col[x]] += Z.val[x] * r[k];

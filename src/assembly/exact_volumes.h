@@ -21,6 +21,8 @@
 
 #include "geometry/geometry.h"
 #include "assembly/kappa_basis.h"
+#include "assembly/position_basis.h"
+#include "assembly/sparse_builder.h"
 
 #include <Eigen/Core>
 
@@ -38,6 +40,23 @@ PairGeometry with_pair_weights(PairGeometry g, const std::vector<Vec3>& w);
 /// solution's weighted motion sum_k chi_bk w_k . dX_v equals swept_b: c = S^-1 swept with
 /// S_ab = sum_k chi_ak chi_bk m_k (the mass Gram matrix of the body indicators).
 Eigen::VectorXd volume_rhs(const Cluster& c, const PairGeometry& g, const Eigen::VectorXd& swept);
+
+/// The derivative of the first block's sum_k kappa_k w_k(dX) with respect to dX at the
+/// iterate (dX, kappa per pair): with u_1 = e_1 / 2 + d_1 / 3, u_2 = e_2 / 2 + d_2 / 3 the
+/// facet's averaged area vector has d/dD_1 = -[u_2]x, d/dD_2 = [u_1]x, d/dD_0 = [u_2 - u_1]x.
+/// It is of the size of the stiffness for the low modes (kappa ~ 2 / R against 1 / R^2), which
+/// is why the plain iteration over the weights contracts only by about 0.3 a solve; adding it
+/// to the matrix (a Newton step in dX with the small (dW / dX)^T dX of the kappa rows left
+/// out) converges in two or three. T^T C T in the position block of a size x size matrix.
+void assemble_weight_derivative(const Cluster& c, const PositionBasis& P,
+                                const std::vector<Vec3>& dX, const Eigen::VectorXd& kappa,
+                                int size, SparseBuilder& M);
+
+/// sum_k chi_bk w_k . dX_v for every body b: the volume the pairs' weighted motion sweeps.
+Eigen::VectorXd pair_sweep(const Cluster& c, const std::vector<Vec3>& w, const std::vector<Vec3>& dX);
+
+/// kappa per pair from the reduced unknowns k (kappa = Z k) starting at `offset` of z.
+Eigen::VectorXd pair_kappa(const KappaBasis& Z, const Eigen::VectorXd& z, int offset);
 
 /// Adds Z^T r to the kappa rows of a system whose kappa unknowns start at `offset`.
 void add_kappa_rhs(const KappaBasis& Z, const Eigen::VectorXd& r, int offset, Eigen::VectorXd& rhs);

@@ -53,6 +53,9 @@ struct TimeStepper::System {
     // r > 1: the weight derivative of Newton's method and the (unsymmetric) Jacobian's solver.
     SparseBuilder weight_jacobian;
     SparseDirectSolver newton{Factorization::LU};
+    // Volume-exact SD: the averaged normals' derivative and the corrected system's solver.
+    SparseBuilder volume_jacobian;
+    SparseDirectSolver exact{Factorization::LU};
 };
 
 TimeStepper::TimeStepper() = default;
@@ -61,7 +64,7 @@ TimeStepper::~TimeStepper() = default;
 void TimeStepper::reset() {
     revision_ = -1;
     mcf_.reset(), sd_.reset(), Z_.reset();
-    last_velocity_.clear(), last_end_.clear();
+    last_z_.resize(0), last_end_.clear();
 }
 
 void TimeStepper::set_fixed_point(FixedPointOptions o) {
@@ -237,19 +240,25 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
 
 Eigen::VectorXd TimeStepper::solve_exact_volumes(Cluster& c, double tau, const PositionBasis& P,
                                                  StepReport& report) {
-    // The fixed point of exact_volumes.h: solve with the weights of the last iterate (the
-    // seed's m omega at X^m first) until the step leaves every body at its target volume.
-    // Each solve reuses the factorisation through GMRES; 2-4 solves at moderate tau.
+    // The fixed point of exact_volumes.h over the weights w(dX): the first solve has the
+    // weights of the start (m omega at X^m, or those of the last step's velocity when this step
+    // continues it), the next ones add the weights' derivative C to the matrix (a Newton step in
+    // dX): 3-6 solves, each on one factorisation reused through GMRES.
     const PairGeometry g = pair_geometry(c);
     const double size = cluster_size(c.positions());
     const int n = c.n_vertices(), nb = c.n_bodies();
     std::vector<Vec3> dX(n, Vec3::Zero());
-    if (last_end_ == c.positions())
-        for (int v = 0; v < n; ++v) dX[v] = P.project_tangent(v, tau * last_velocity_[v]);
-    Anderson anderson(6);
+    Eigen::VectorXd z_last;
+    if (last_end_ == c.positions() && last_z_.size() > 0) { // this step continues the last one
+        z_last = last_z_;
+        z_last.head(P.size()) *= tau / last_tau_;
+        for (int v = 0; v < n; ++v) dX[v] = P.displacement(z_last, v);
+    }
+    Anderson anderson(6); // r > 1 only, where Newton's method on (3.9) runs inside each solve
     const std::vector<double> V0 = body_volumes(c);
-    Eigen::VectorXd swept(c.n_bodies()); // what the weighted motion must sweep; see below
-    for (int b = 0; b < c.n_bodies(); ++b) swept[b] = c.target_volumes()[b] - V0[b];
+    Eigen::VectorXd change_needed(nb), swept(nb); // V* - V0; what the pairs' motion must sweep
+    for (int b = 0; b < nb; ++b) change_needed[b] = c.target_volumes()[b] - V0[b];
+    swept = change_needed;
     struct Reset { // the pointers must not outlive this call, whatever it throws
         TimeStepper& s;
         ~Reset() { s.weights_ = nullptr, s.kappa_rhs_ = nullptr; }
@@ -259,30 +268,34 @@ Eigen::VectorXd TimeStepper::solve_exact_volumes(Cluster& c, double tau, const P
         const PairGeometry weighted = with_pair_weights(g, w);
         const Eigen::VectorXd r = volume_rhs(c, g, swept);
         weights_ = &weighted, kappa_rhs_ = &r;
-        const Eigen::VectorXd z = c.nonlinear()
-                                      ? solve_newton(c, Flow::SurfaceDiffusion, tau, P, report)
-                                      : solve_once(c, Flow::SurfaceDiffusion, tau, P, nullptr, report);
+        Eigen::VectorXd z;
+        if (c.nonlinear()) {
+            z = solve_newton(c, Flow::SurfaceDiffusion, tau, P, report);
+        } else if (z_last.size() == 0) {
+            z = solve_once(c, Flow::SurfaceDiffusion, tau, P, nullptr, report);
+        } else { // (M(w) + C) z = rhs + C z_last: the fixed point of M(w(dX)) z = rhs
+            System& sys = assemble(c, Flow::SurfaceDiffusion, tau, P, nullptr, report);
+            assemble_weight_derivative(c, P, dX, pair_kappa(*Z_, z_last, P.size()),
+                                       static_cast<int>(z_last.size()), sys.volume_jacobian);
+            const SparseMatrix& C = sys.volume_jacobian.finish();
+            const SparseMatrix J = sys.matrix.finish() + C;
+            z = solve_checked(sys.exact, J, sys.rhs + C * z_last, tau, report);
+        }
         ++report.volume_iterations;
-        std::vector<Vec3> X = displaced(c, P, z);
+        const std::vector<Vec3> X = displaced(c, P, z);
+        std::vector<Vec3> dz(n);
+        double change = 0;
+        for (int v = 0; v < n; ++v) {
+            dz[v] = X[v] - c.position(v);
+            change = std::max(change, (dz[v] - dX[v]).cwiseAbs().maxCoeff());
+        }
         const std::vector<double> V = body_volumes(c, X);
         report.volume_error = 0;
-        Eigen::VectorXd x(3 * n + nb), f(3 * n + nb); // the iterate (dX, swept) and its update
-        for (int v = 0; v < n; ++v) {
-            x.segment<3>(3 * v) = dX[v];
-            f.segment<3>(3 * v) = X[v] - c.position(v) - dX[v];
-        }
-        for (int b = 0; b < nb; ++b) {
-            const double error = c.target_volumes()[b] - V[b];
-            report.volume_error = std::max(report.volume_error, std::abs(error) / c.target_volumes()[b]);
-            // Integral feedback: what the last solve missed (the weights' change, curved lids'
-            // bulge, round-off) is asked for again; at the fixed point V = V*.
-            x[3 * n + b] = swept[b], f[3 * n + b] = error;
-        }
-        const double change = f.head(3 * n).cwiseAbs().maxCoeff();
+        for (int b = 0; b < nb; ++b)
+            report.volume_error = std::max(report.volume_error, std::abs(c.target_volumes()[b] - V[b]) /
+                                                                    c.target_volumes()[b]);
         if (report.volume_error <= kVolumeTolerance || change <= 1e-15 * size) {
-            last_end_ = std::move(X);
-            last_velocity_.resize(n);
-            for (int v = 0; v < n; ++v) last_velocity_[v] = (last_end_[v] - c.position(v)) / tau;
+            last_end_ = X, last_z_ = z, last_tau_ = tau;
             return z;
         }
         if (report.volume_iterations >= kMaxVolumeIterations)
@@ -290,11 +303,22 @@ Eigen::VectorXd TimeStepper::solve_exact_volumes(Cluster& c, double tau, const P
                                    std::to_string(report.volume_iterations) + " solves (volume error " +
                                    fmt(report.volume_error) + ", tau = " + fmt(tau) +
                                    "); the cluster is unchanged (try a smaller tau, or exact_volumes = false)");
-        // The plain iteration contracts by about 0.3 per solve (the weights' tangential
-        // sensitivity); Anderson's combination of the last iterates needs a few solves.
-        const Eigen::VectorXd next = anderson.next(x, f);
-        for (int v = 0; v < n; ++v) dX[v] = next.segment<3>(3 * v);
-        swept = next.tail(nb);
+        // The next solve, with the weights w(dz), must sweep what the films must carry: the
+        // needed change less what the lids add beyond the films (curved walls), plus what this
+        // solve missed of its own target (round-off of an ill-conditioned solve).
+        const Eigen::VectorXd missed = swept - pair_sweep(c, w, dz);
+        swept = change_needed - (Eigen::Map<const Eigen::VectorXd>(V.data(), nb) -
+                                 Eigen::Map<const Eigen::VectorXd>(V0.data(), nb) -
+                                 pair_sweep(c, simpson_pair_weights(c, dz), dz)) + missed;
+        if (c.nonlinear()) { // Anderson on (dX, swept): Newton's C is not used there
+            Eigen::VectorXd x(3 * n + nb), f(3 * n + nb);
+            for (int v = 0; v < n; ++v) x.segment<3>(3 * v) = dX[v], f.segment<3>(3 * v) = dz[v] - dX[v];
+            x.tail(nb).setZero(), f.tail(nb) = swept;
+            const Eigen::VectorXd next = anderson.next(x, f);
+            for (int v = 0; v < n; ++v) dz[v] = next.segment<3>(3 * v);
+            swept = next.tail(nb);
+        }
+        dX = std::move(dz), z_last = std::move(z);
     }
 }
 

@@ -87,7 +87,7 @@ class TimeStepper {
     void set_fixed_point(FixedPointOptions o);
     const FixedPointOptions& fixed_point() const { return fixed_point_; }
     /// With exact, surface diffusion keeps every body at its target volume (the
-    /// structure-preserving step of assembly/exact_volumes.h, 5-13 solves per step); without
+    /// structure-preserving step of assembly/exact_volumes.h, 2-4 solves per step); without
     /// (the default), it runs the seed's linear scheme (3.6)/(3.8), which loses O(tau^2) of
     /// volume per step.
     void set_exact_volumes(bool exact) { exact_volumes_ = exact; }
@@ -115,9 +115,11 @@ class TimeStepper {
     // Set during a volume-exact step: the pair weights and kappa rows assemble() uses.
     const PairGeometry* weights_ = nullptr;
     const Eigen::VectorXd* kappa_rhs_ = nullptr;
-    // The last volume-exact step's displacement per unit tau and the positions it ended at: the
-    // next step starts its fixed point from it when it starts where that one ended.
-    std::vector<Vec3> last_velocity_, last_end_;
+    // The last volume-exact step's solution, its tau and the positions it ended at: the next
+    // step starts its fixed point from it (positions scaled by the taus) when it starts there.
+    Eigen::VectorXd last_z_;
+    double last_tau_ = 1;
+    std::vector<Vec3> last_end_;
     int revision_ = -1; ///< the cluster's assembly_revision() the patterns were built for
     std::unique_ptr<System> mcf_, sd_;
     std::unique_ptr<KappaBasis> Z_;
