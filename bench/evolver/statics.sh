@@ -5,7 +5,9 @@
 # problem and target relative area error (1e-3, 3e-4, 1e-4) each program runs at the cheapest
 # resolution that reaches the target, and one table row gives vertices, seconds and achieved
 # error of each, the ratio of the seconds froth / Evolver, and froth's volume error (Evolver
-# holds its volumes as constraints, to about 1e-12). Not part of CI. Usage, from the repository
+# holds its volumes as constraints, to about 1e-12); also c:minimize's own seconds and
+# iterations (the rest of froth's seconds is startup, about 0.2 s of dynamic loading with
+# Debian's libgmsh, and meshing). Not part of CI. Usage, from the repository
 # root (a few minutes; one process at a time):
 #   bash bench/evolver/statics.sh [path/to/froth]          (default build/froth)
 #   REPEAT=5 bash bench/evolver/statics.sh build/froth
@@ -24,51 +26,69 @@
 #           13.1281682, Richardson-extrapolated from Evolver's levels 5 and 6 (below).
 #
 # References. Evolver's level-L areas A_L converge as h^2 (successive differences fall by 4.0),
-# so (4 A_6 - A_5) / 3 removes the leading error. With this script's Evolver schedule that
+# so (4 A_6 - A_5) / 3 removes the leading error. With Evolver's candidate A (below) that
 # gives 9.1394216014 and 11.8542930006 for db11 and db12 (relative errors -8e-9 and -1.1e-8
 # against the exact areas, where A_6 itself is 1.1e-5 and 1.2e-5 too high), and for triple
 # A_5 = 13.1286535202431, A_6 = 13.1282894768364 (155332 vertices; two more Hessian steps
-# change it by 1e-14), extrapolated 13.1281681290; another schedule (`r; u; g 10;
+# change it by 1e-12 relative), extrapolated 13.1281681290; another schedule (`r; u; g 10;
 # hessian_seek; hessian; hessian` per level) gives A_6 = 13.1282913281303 and 13.1281683568.
 # Reference: 13.1281682, uncertain by about 2e-8 relative. (A_6 itself would bias every
-# error by -9e-6, 9% of the 1e-4 target.) Printed by --reference, which runs
-#   statics.cmd with LEVELS = 6, STEP = "r; u; V; g 3; hessian".
+# error by -9e-6, 9% of the 1e-4 target.) --reference prints these, running Evolver's
+# candidate A (below) to level 6.
 #
-# Evolver: statics.cmd, 200 conjugate gradient steps on the unrefined cells, then per level
-# one of the schedules in EV_STEPS; the script runs each schedule once to level EV_MAX (5),
-# takes the lowest level whose area reaches the target, times processes that stop at that
-# level, and keeps the faster schedule. Tried while choosing (noisy timings, under load):
-#   "r; g 30; hessian; hessian" (run.sh's): 3-4x slower at level 5, no better per level;
-#     on the triple it diverges (Hessian not positive definite) without the initial g 200.
+# Evolver: statics.cmd, with the candidate runs EV_RUNS (A, B, C below): a relaxation PRE of
+# the unrefined datafile, then per level STEP. For each problem the script runs each candidate
+# once to its highest level, takes the lowest level whose area reaches each target, times
+# processes that stop at that level, and keeps the fastest candidate. Evolver's resolution
+# moves in steps of 4x vertices per level, so C starts from the datafiles with every face cut
+# 3 x 3 (make_cells_fe.py; level L of C is about level L + 1.6 of A): at 1e-4 its level 3
+# (12627 vertices for the double bubbles) beats A's level 5 (22467).
+#   A  two_cubes.fe / three_cells.fe, PRE "U; g 200", STEP "r; u; V; g 3; hessian"
+#   B  the same with STEP "r; g 3; hessian"
+#   C  two_cubes_3.fe / three_cells_3.fe, PRE "U; g 300; hessian_seek; hessian_seek", STEP A's
+# Tried while choosing (timings noisy, under load):
+#   "r; g 30; hessian; hessian" (run.sh's double_bubble.cmd): 3-4x slower at level 5 and no
+#     more accurate per level; on the triple, without the conjugate gradient PRE, its Hessian
+#     steps are not positive definite from level 1 on and the area diverges (to 1e9 at level
+#     5); plain gradient steps converge far too slowly there (400 steps at level 1 are not
+#     enough), conjugate gradient (U) does it in 200.
 #   "r; g 5; hessian; hessian", "r; u; g 10; hessian_seek; hessian", "r; u; V; hessian;
-#     hessian" and two Hessian steps instead of one: no faster; one Hessian step per level
-#     after 3 g steps has converged (a second moves the area by < 1e-9 relative).
-# Fewer g steps before the Hessian leave worse meshes (hessian moves vertices only normally),
-# so the level-L area depends on the schedule: levels 3, 4, 5 reach 1e-3, 3e-4, 1e-4 here.
+#     hessian", and two Hessian steps instead of one: no faster. One Hessian step after 3 g
+#     steps has converged (a second moves the area by < 1e-9 relative).
+#   B on three_cells_3.fe, or C with PRE "U; g 200" or "U; g 1000": on the triple the area
+#     rises again from level 2 or 3 on (Hessian steps not positive definite, or off course).
+# Fewer g steps before the Hessian leave worse meshes (hessian_normal moves the vertices only
+# normally), so the area at a level depends on the schedule; equiangulation (u) and vertex
+# averaging (V) each level buy back most of that.
 #
-# froth: statics_froth.lua problem=P h=H tol=T, c:minimize{tol = T} on the gmsh mesh of size H.
-# (h, tol) per target, chosen by a search (h in 0.14 .. 0.03, tol in 1e-1, 3e-2, 1e-2, 3e-3;
-# statics_froth.lua takes comma lists): the cheapest whose error is below the target, with
-# a few per cent of margin. gmsh's vertex count is not monotone in h (h = 0.11 gives 1333
-# vertices, 0.1 gives 1323). The errors they reach (same machine, gmsh 4.x):
-#   db11    1e-3: h 0.12  tol 3e-2  1072 v  9.15e-4   (0.13: 1.12e-3)
-#           3e-4: h 0.065 tol 1e-2  3351 v  2.85e-4   (0.07: 3.23e-4)
-#           1e-4: h 0.037 tol 1e-2  9950 v  9.50e-5   (0.038: 1.01e-4)
-#   db12    1e-3: h 0.11  tol 3e-2  1333 v  8.69e-4   (0.12 tol 3e-2: 1.09e-3)
-#           3e-4: h 0.055 tol 3e-2  4661 v  2.55e-4   (0.06 tol 1e-2: 3.09e-4)
-#           1e-4: h 0.033 tol 1e-2 12316 v  9.68e-5   (0.035: 1.09e-4)
-#   triple  1e-3: h 0.11  tol 3e-2  1892 v  8.17e-4   (0.12 tol 1e-2: 1.003e-3)
-#           3e-4: h 0.06  tol 1e-2  5459 v  2.77e-4   (0.065 tol 1e-2: 3.21e-4)
-#           1e-4: h 0.035 tol 1e-2 15817 v  9.72e-5   (0.037 tol 1e-2: 1.07e-4)
-# A smaller tol than these buys little area (the residual's tail is slow, see docs) and costs
-# up to 100x the iterations; a smaller h is the cheaper way to a smaller error.
+# froth: statics_froth.lua problem=P h=H tol=T levels=L: Evolver's own coarse-to-fine
+# schedule, c:minimize{tol = T} on the gmsh mesh of size H, then L times c:refine() and
+# c:minimize{tol = T, tau_start = 1e4}. (h, tol, levels) per target, chosen by a search
+# (2026-12-01, at 844f39b; h in 0.3 .. 0.12, levels 0 .. 2, tol 3e-2 or 1e-2): the cheapest
+# whose error is below the target. Refining a coarse equilibrium is much cheaper than meshing
+# finely with gmsh (0.43 s for 9950 vertices) and minimising from the boxes there. The errors:
+#   db11    1e-3: h 0.2   tol 3e-2 L 1   1451 v  6.91e-4
+#           3e-4: h 0.13  tol 3e-2 L 1   3543 v  2.83e-4
+#           1e-4: h 0.15  tol 1e-2 L 2  10331 v  9.60e-5
+#   db12    1e-3: h 0.2   tol 3e-2 L 1   1451 v  7.85e-4
+#           3e-4: h 0.12  tol 3e-2 L 1   4315 v  2.76e-4   (0.13: 3.36e-4)
+#           1e-4: h 0.14  tol 1e-2 L 2  14355 v  8.33e-5   (0.145: 1.10e-4)
+#   triple  1e-3: h 0.2   tol 3e-2 L 1   2098 v  7.44e-4   (0.25: 1.23e-3)
+#           3e-4: h 0.12  tol 3e-2 L 1   6178 v  2.57e-4   (0.125: 3.11e-4)
+#           1e-4: h 0.14  tol 1e-2 L 2  20420 v  8.17e-5   (0.145: 1.03e-4)
+# Without refinement (L = 0) froth needs h 0.12 / 0.065 / 0.037 on db11 (1072 / 3351 / 9950
+# vertices) and is 1.2-2x slower at the two finer targets.
 set -eu
-FROTH=${1:-build/froth}
-REFERENCE=${2:-}
+FROTH=build/froth REFERENCE=""
+for a in "$@"; do
+  case $a in
+    --reference) REFERENCE=1 ;;
+    -*) echo "usage: bash bench/evolver/statics.sh [path/to/froth] [--reference]"; exit 2 ;;
+    *) FROTH=$a ;;
+  esac
+done
 DIR=$(cd "$(dirname "$0")" && pwd)
 REPEAT=${REPEAT:-3}
-EV_MAX=${EV_MAX:-5}
-EV_STEPS=("r; u; V; g 3; hessian" "r; g 3; hessian")
 export FROTH_LUA_DIR=${FROTH_LUA_DIR:-$DIR/../../lua}
 command -v evolver >/dev/null || { echo "statics.sh: no evolver (apt-get install evolver-nox)"; exit 1; }
 [ -x "$FROTH" ] || { echo "statics.sh: no froth executable at $FROTH"; exit 1; }
@@ -77,43 +97,62 @@ trap 'rm -rf "$TMP"' EXIT
 
 TARGETS="1e-3 3e-4 1e-4"
 PROBLEMS="db11 db12 triple"
-declare -A FE=([db11]=two_cubes.fe [db12]=two_cubes.fe [triple]=three_cells.fe)
+declare -A FE=([db11]=two_cubes [db12]=two_cubes [triple]=three_cells)
 declare -A EV_TARGETS=([db11]="" [db12]="set body[2] target 2" [triple]="")
 declare -A REF=([db11]=9.1394216780693 [db12]=11.8542931280002 [triple]=13.1281682)
+# Evolver's candidate runs: datafile suffix ("" or _3, the faces cut 3 x 3), PRE, STEP and the
+# highest level the selection run goes to (statics.cmd has the placeholders)
+EV_RUNS=(A B C)
+declare -A EV_SUFFIX=([A]="" [B]="" [C]=_3)
+declare -A EV_PRE=([A]="U; g 200" [B]="U; g 200" [C]="U; g 300; hessian_seek; hessian_seek")
+declare -A EV_STEP=([A]="r; u; V; g 3; hessian" [B]="r; g 3; hessian" [C]="r; u; V; g 3; hessian")
+declare -A EV_MAX=([A]=5 [B]=5 [C]=3)
 # froth's (h, tol) per problem and target, from the search above
-declare -A FROTH_H=([db11,1e-3]=0.12 [db11,3e-4]=0.065 [db11,1e-4]=0.037
-                    [db12,1e-3]=0.11 [db12,3e-4]=0.055 [db12,1e-4]=0.033
-                    [triple,1e-3]=0.11 [triple,3e-4]=0.06 [triple,1e-4]=0.035)
-declare -A FROTH_TOL=([db11,1e-3]=3e-2 [db11,3e-4]=1e-2 [db11,1e-4]=1e-2
+declare -A FROTH_H=([db11,1e-3]=0.2 [db11,3e-4]=0.13 [db11,1e-4]=0.15
+                    [db12,1e-3]=0.2 [db12,3e-4]=0.12 [db12,1e-4]=0.14
+                    [triple,1e-3]=0.2 [triple,3e-4]=0.12 [triple,1e-4]=0.14)
+declare -A FROTH_TOL=([db11,1e-3]=3e-2 [db11,3e-4]=3e-2 [db11,1e-4]=1e-2
                       [db12,1e-3]=3e-2 [db12,3e-4]=3e-2 [db12,1e-4]=1e-2
-                      [triple,1e-3]=3e-2 [triple,3e-4]=1e-2 [triple,1e-4]=1e-2)
+                      [triple,1e-3]=3e-2 [triple,3e-4]=3e-2 [triple,1e-4]=1e-2)
+declare -A FROTH_LEVELS=([db11,1e-3]=1 [db11,3e-4]=1 [db11,1e-4]=2
+                         [db12,1e-3]=1 [db12,3e-4]=1 [db12,1e-4]=2
+                         [triple,1e-3]=1 [triple,3e-4]=1 [triple,1e-4]=2)
 
 now() { date +%s.%N; }
-# best_of OUT cmd...: runs cmd REPEAT times (stdout to OUT, stderr to OUT.err), prints the
-# fastest wall time in seconds; fails if any run fails.
+# best_of OUT cmd...: runs cmd REPEAT times, prints the fastest wall time in seconds and
+# leaves that run's stdout in OUT; fails if any run fails.
 best_of() {
-  local out=$1 best="" t0 t1 i
+  local out=$1 best="" t0 t1 t i
   shift
   for ((i = 0; i < REPEAT; i++)); do
     t0=$(now)
-    "$@" > "$out" 2> "$out.err" || { echo "statics.sh: failed: $* (see below)" >&2; cat "$out.err" >&2; return 1; }
+    "$@" > "$out.run" 2> "$out.err" || { echo "statics.sh: failed: $* (see below)" >&2; cat "$out.err" >&2; return 1; }
     t1=$(now)
-    best=$(awk -v a="$t0" -v b="$t1" -v best="$best" 'BEGIN { t = b - a; if (best == "" || t < best) best = t; print best }')
+    t=$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')
+    if [ -z "$best" ] || awk -v a="$t" -v b="$best" 'BEGIN { exit !(a < b) }'; then
+      best=$t
+      mv "$out.run" "$out"
+    fi
   done
   echo "$best"
 }
-# evolver_cmd problem levels step > file
+# evolver_cmd problem run levels > file
 evolver_cmd() {
-  sed -e "s/TARGETS/${EV_TARGETS[$1]}/" -e "s/LEVELS/$2/" -e "s/STEP/$3/" "$DIR/statics.cmd"
+  sed -e "s/TARGETS/${EV_TARGETS[$1]}/" -e "s/PRE/${EV_PRE[$2]}/" -e "s/LEVELS/$3/" \
+      -e "s/STEP/${EV_STEP[$2]}/" "$DIR/statics.cmd"
+}
+# evolver_run problem run levels > output (one process, timeout 120 s)
+evolver_run() {
+  evolver_cmd "$1" "$2" "$3" > "$TMP/$2.cmd"
+  timeout 120 evolver -x -f "$TMP/$2.cmd" "$DIR/${FE[$1]}${EV_SUFFIX[$2]}.fe"
 }
 relerr() { awk -v a="$1" -v r="$2" 'BEGIN { printf "%.3e", (a - r) / r }'; }
 below() { awk -v e="$1" -v t="$2" 'BEGIN { exit !((e < 0 ? -e : e) <= t) }'; }
 
-if [ "$REFERENCE" = "--reference" ]; then
-  echo "== References: Evolver to level 6 (${EV_STEPS[0]}), Richardson (4 A_6 - A_5) / 3"
+if [ -n "$REFERENCE" ]; then
+  echo "== References: Evolver run A to level 6, Richardson (4 A_6 - A_5) / 3"
   for p in $PROBLEMS; do
-    evolver_cmd "$p" 6 "${EV_STEPS[0]}" > "$TMP/ref.cmd"
-    timeout 120 evolver -x -f "$TMP/ref.cmd" "$DIR/${FE[$p]}" > "$TMP/ref.out" 2>&1 || true
+    evolver_run "$p" A 6 > "$TMP/ref.out" 2>&1 || true
     grep '^EVOLVER' "$TMP/ref.out" | awk -v p="$p" -v ref="${REF[$p]}" '
       { a[$2] = $5; v[$2] = $3 }
       END { if (!(5 in a) || !(6 in a)) { print p ": level 6 did not finish (timeout 120 s?)"; exit }
@@ -125,43 +164,48 @@ if [ "$REFERENCE" = "--reference" ]; then
 fi
 
 echo "statics.sh: $(date -u '+%Y-%m-%d %H:%M UTC'), froth $FROTH, best of $REPEAT runs, load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "Evolver runs (statics.cmd; the fastest that reaches the target is shown):"
+for k in "${EV_RUNS[@]}"; do
+  echo "  $k: ${FE[db11]}${EV_SUFFIX[$k]}.fe / ${FE[triple]}${EV_SUFFIX[$k]}.fe, PRE \"${EV_PRE[$k]}\", per level \"${EV_STEP[$k]}\""
+done
 echo
-echo "| problem | target | froth h | tol | vertices | froth s | froth error | volume error | Evolver level | schedule | vertices | Evolver s | Evolver error | froth/Evolver |"
+echo "| problem | target | froth h, levels | tol | vertices | froth s | minimize s (iterations) | froth error | volume error | Evolver run, level | vertices | Evolver s | Evolver error | froth/Evolver |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|"
 for p in $PROBLEMS; do
-  # Evolver: per schedule, the lowest level that reaches each target (one run to EV_MAX)
+  # Evolver: per candidate, the lowest level that reaches each target (one run to its max)
   declare -A EV_LEVEL=()
-  for k in "${!EV_STEPS[@]}"; do
-    evolver_cmd "$p" "$EV_MAX" "${EV_STEPS[$k]}" > "$TMP/sel.cmd"
-    timeout 120 evolver -x -f "$TMP/sel.cmd" "$DIR/${FE[$p]}" > "$TMP/sel.out" 2>&1 || true
+  for k in "${EV_RUNS[@]}"; do
+    evolver_run "$p" "$k" "${EV_MAX[$k]}" > "$TMP/sel.out" 2>&1 || true
     for t in $TARGETS; do
       EV_LEVEL[$k,$t]=$(grep '^EVOLVER' "$TMP/sel.out" | awk -v r="${REF[$p]}" -v t="$t" '
         { e = ($5 - r) / r; if (e < 0) e = -e; if (e <= t && !found) { print $2; found = 1 } }')
     done
   done
   for t in $TARGETS; do
-    h=${FROTH_H[$p,$t]} tol=${FROTH_TOL[$p,$t]}
-    fs=$(best_of "$TMP/froth.out" timeout 600 "$FROTH" "$DIR/statics_froth.lua" problem="$p" h="$h" tol="$tol")
-    read -r _ _ _ _ fv _ _ farea _ fverr fstop < <(grep '^FROTH '"$p" "$TMP/froth.out")
+    h=${FROTH_H[$p,$t]} tol=${FROTH_TOL[$p,$t]} levels=${FROTH_LEVELS[$p,$t]}
+    fs=$(best_of "$TMP/froth.out" timeout 600 "$FROTH" "$DIR/statics_froth.lua" problem="$p" h="$h" tol="$tol" levels="$levels" ref="${REF[$p]}")
+    read -r _ _ _ _ fv fit fmin farea _ fverr fstop < <(grep '^FROTH '"$p" "$TMP/froth.out") ||
+      { echo "statics.sh: no result line from froth:" >&2; cat "$TMP/froth.out" >&2; exit 1; }
     ferr=$(relerr "$farea" "${REF[$p]}")
     below "$ferr" "$t" || ferr="$ferr (!)"
     [ "$fstop" = converged ] || ferr="$ferr ($fstop)"
-    # Evolver: time each schedule at its level, keep the fastest
-    es="" el="-" ek="" ev="-" eerr="did not reach"
-    for k in "${!EV_STEPS[@]}"; do
+    # Evolver: time each candidate at its level, keep the fastest
+    es="" erun="-" ev="-" eerr="did not reach"
+    for k in "${EV_RUNS[@]}"; do
       lev=${EV_LEVEL[$k,$t]:-}
       [ -n "$lev" ] || continue
-      evolver_cmd "$p" "$lev" "${EV_STEPS[$k]}" > "$TMP/ev$k.cmd"
-      s=$(best_of "$TMP/ev.out" timeout 120 evolver -x -f "$TMP/ev$k.cmd" "$DIR/${FE[$p]}")
+      evolver_cmd "$p" "$k" "$lev" > "$TMP/$k.cmd"
+      s=$(best_of "$TMP/ev.out" timeout 120 evolver -x -f "$TMP/$k.cmd" "$DIR/${FE[$p]}${EV_SUFFIX[$k]}.fe")
       if [ -z "$es" ] || awk -v a="$s" -v b="$es" 'BEGIN { exit !(a < b) }'; then
-        es=$s el=$lev ek=$k
-        read -r _ _ ev _ earea < <(grep '^EVOLVER' "$TMP/ev.out" | tail -1)
+        es=$s erun="$k, $lev"
+        read -r _ _ ev _ earea < <(grep '^EVOLVER' "$TMP/ev.out" | tail -1) ||
+          { echo "statics.sh: no result line from Evolver:" >&2; cat "$TMP/ev.out" >&2; exit 1; }
         eerr=$(relerr "$earea" "${REF[$p]}")
       fi
     done
     ratio=$( [ -n "$es" ] && awk -v a="$fs" -v b="$es" 'BEGIN { printf "%.2f", a / b }' || echo "-")
-    printf "| %s | %s | %s | %s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s |\n" "$p" "$t" \
-      "$h" "$tol" "$fv" "$fs" "$ferr" "$fverr" "$el" "${ek:+${EV_STEPS[$ek]}}" "$ev" \
+    printf "| %s | %s | %s | %s | %s | %.3f | %s (%s) | %s | %s | %s | %s | %s | %s | %s |\n" "$p" \
+      "$t" "$h, $levels" "$tol" "$fv" "$fs" "$fmin" "$fit" "$ferr" "$fverr" "$erun" "$ev" \
       "${es:+$(printf %.3f "$es")}" "$eerr" "$ratio"
   done
   unset EV_LEVEL
