@@ -119,6 +119,24 @@ end
 --- `opts.half`, body 1 is the upper half (x3 >= 0) of rW resting on x3 = 0 (for a gamma even
 --- in x3, so that it holds half of |rW|). |W| is that of froth.wulff_shape (level 4 plus the
 --- facet directions: an outer polytope, within 0.3% of |W|, so r within 0.1%); needs CGAL.
+--- For a drop on the plane z = 0: the centre of its rim (the mean of the vertices on z = 0) and
+--- max_v |gamma*(x_v - centre) / S - 1|, how far the drop is from the Wulff shape S W centred on
+--- its rim (the rim slides, so its centre, not the origin, is where the shape sits).
+function M.rim_centred_wulff_deviation(c, gamma, S)
+  local cx, cy, n = 0, 0, 0
+  for v = 1, c:info().vertices do
+    local x = c:vertex(v)
+    if math.abs(x[3]) < 1e-9 then cx, cy, n = cx + x[1], cy + x[2], n + 1 end
+  end
+  cx, cy = cx / n, cy / n
+  local dev = 0
+  for v = 1, c:info().vertices do
+    local x = c:vertex(v)
+    dev = math.max(dev, math.abs(gamma:gamma_star(x[1] - cx, x[2] - cy, x[3]) / S - 1))
+  end
+  return dev, cx, cy
+end
+
 function M.wulff_deviation(c, gamma, opts)
   local W = froth.wulff_shape(gamma):volumes()[1]
   if opts and opts.half then W = W / 2 end

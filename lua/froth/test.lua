@@ -43,6 +43,22 @@ end
 --- Relative difference |a - b| / |b|.
 function M.rel(a, b) return math.abs(a - b) / math.abs(b) end
 
+--- The positions of all vertices of c, for checking that a failed call changed nothing.
+function M.positions(c)
+  local X = {}
+  for v = 1, c:info().vertices do X[v] = c:vertex(v) end
+  return X
+end
+
+--- True if c has exactly the positions X (M.positions).
+function M.same_positions(c, X)
+  for v = 1, c:info().vertices do
+    local x = c:vertex(v)
+    if x[1] ~= X[v][1] or x[2] ~= X[v][2] or x[3] ~= X[v][3] then return false end
+  end
+  return #X == c:info().vertices
+end
+
 --- "surfaces/triple_lines/quadruple_points/bodies" of a cluster, for compact count checks.
 function M.counts(c)
   local i = c:info()

@@ -8,18 +8,7 @@ if not froth.has("gmsh") then
   return T.summary()
 end
 
-local function positions(c)
-  local X = {}
-  for v = 1, c:info().vertices do X[v] = c:vertex(v) end
-  return X
-end
-local function same(c, X)
-  for v = 1, c:info().vertices do
-    local x = c:vertex(v)
-    if x[1] ~= X[v][1] or x[2] ~= X[v][2] or x[3] ~= X[v][3] then return false end
-  end
-  return true
-end
+local positions, same = T.positions, T.same_positions
 
 -- minimize: equal double bubble, against the standard double bubble of its volumes.
 local c = froth.double_bubble{h = 0.12}

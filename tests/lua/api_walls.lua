@@ -90,19 +90,7 @@ local function drop_on_sphere(wall, Rw, r0, J, K)
   return froth.cluster{vertices = V, surfaces = {F}, bodies = {{1}}, walls = {wall}}
 end
 
-local function positions(c)
-  local X = {}
-  for v = 1, c:info().vertices do X[v] = c:vertex(v) end
-  return X
-end
-
-local function same_positions(c, X)
-  for v = 1, c:info().vertices do
-    local x = c:vertex(v)
-    if x[1] ~= X[v][1] or x[2] ~= X[v][2] or x[3] ~= X[v][3] then return false end
-  end
-  return #X == c:info().vertices
-end
+local positions, same_positions = T.positions, T.same_positions
 
 -- The walls and their methods ----------------------------------------------------------------
 

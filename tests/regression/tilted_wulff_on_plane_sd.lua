@@ -73,17 +73,7 @@ T.assert_near(ca.max_deviation, end_deviation, 0.75, "contact angles of the half
 
 local V = r.volumes[1]
 local S = (V / (4 * math.pi / 3)) ^ (1 / 3)
-local cx, cy, n = 0, 0, 0
-for v = 1, drop:info().vertices do
-  local x = drop:vertex(v)
-  if math.abs(x[3]) < 1e-9 then cx, cy, n = cx + x[1], cy + x[2], n + 1 end
-end
-cx, cy = cx / n, cy / n
-local shape = 0
-for v = 1, drop:info().vertices do
-  local x = drop:vertex(v)
-  shape = math.max(shape, math.abs(gamma:gamma_star(x[1] - cx, x[2] - cy, x[3]) / S - 1))
-end
+local shape, cx, cy = require("froth.measure").rim_centred_wulff_deviation(drop, gamma, S)
 print(("energy %.5f, Wulff %.5f; shape within %.4f; volume loss %.3f%%; rim centre (%.3f, %.3f)")
       :format(r.energy, 3 * V / S, shape, 100 * r.volume_loss, cx, cy))
 T.assert_near(r.energy / (3 * V / S), 1, 0.003, "energy of the half Wulff shape, 3 V / S")
