@@ -61,23 +61,21 @@
 # normally), so the area at a level depends on the schedule; equiangulation (u) and vertex
 # averaging (V) each level buy back most of that.
 #
-# froth: statics_froth.lua problem=P h=H tol=T levels=L: Evolver's own coarse-to-fine
-# schedule, c:minimize{tol = T} on the gmsh mesh of size H, then L times c:refine() and
-# c:minimize{tol = T, tau_start = 1e4}. (h, tol, levels) per target, chosen by a search
-# (2026-12-01, at 844f39b; h in 0.3 .. 0.12, levels 0 .. 2, tol 3e-2 or 1e-2): the cheapest
-# whose error is below the target. Refining a coarse equilibrium is much cheaper than meshing
-# finely with gmsh (0.43 s for 9950 vertices) and minimising from the boxes there. The errors:
-#   db11    1e-3: h 0.2   tol 3e-2 L 1   1451 v  6.91e-4
-#           3e-4: h 0.13  tol 3e-2 L 1   3543 v  2.83e-4
-#           1e-4: h 0.15  tol 1e-2 L 2  10331 v  9.60e-5
-#   db12    1e-3: h 0.2   tol 3e-2 L 1   1451 v  7.85e-4
-#           3e-4: h 0.12  tol 3e-2 L 1   4315 v  2.76e-4   (0.13: 3.36e-4)
-#           1e-4: h 0.14  tol 1e-2 L 2  14355 v  8.33e-5   (0.145: 1.10e-4)
-#   triple  1e-3: h 0.2   tol 3e-2 L 1   2098 v  7.44e-4   (0.25: 1.23e-3)
-#           3e-4: h 0.12  tol 3e-2 L 1   6178 v  2.57e-4   (0.125: 3.11e-4)
-#           1e-4: h 0.14  tol 1e-2 L 2  20420 v  8.17e-5   (0.145: 1.03e-4)
-# Without refinement (L = 0) froth needs h 0.12 / 0.065 / 0.037 on db11 (1072 / 3351 / 9950
-# vertices) and is 1.2-2x slower at the two finer targets.
+# froth: statics_froth.lua, Evolver's own coarse-to-fine schedule: c:minimize{tol} on a start
+# mesh, then `levels` times c:refine() and c:minimize{tol, tau_start = 1e4}. Two starts:
+#   start=boxes cut=1 pre=P  the boxes of Evolver's own datafiles (froth.box_cells, no gmsh:
+#                            froth then starts in 0.02 s), refined P times before the first
+#                            minimize; the same vertex counts as Evolver's levels
+#   h=H                      gmsh's mesh of the boxes at size H (loading the gmsh plugin costs
+#                            0.13 s), better triangles than refined boxes
+# Chosen per target by a search (2026-12-01; pre 1..3, levels 0..3, tol 1e-1 .. 1e-2, h 0.3 ..
+# 0.12): the fastest whose error is below the target (measured: db11 / db12 / triple)
+#   1e-3: boxes pre 1 levels 2 tol 1e-1  1395 / 1395 / 2396 v   8.9e-4 / - / 8.6e-4
+#   3e-4: boxes pre 2 levels 2 tol 1e-1  5603 / 5603 / 9652 v   2.5e-4 / - / 2.9e-4
+#   1e-4: gmsh h 0.15 / 0.14 / 0.14, levels 2, tol 1e-2 / 1e-1 / 1e-2  10331 / 14355 / 20420 v
+#         (boxes reach 1e-4 only at the next level, 22467 vertices: refined box meshes have
+#         worse triangles than gmsh's, 1.2e-4 at 12627 vertices from the 3 x 3 boxes where
+#         Evolver, with u and V, has 9.5e-5)
 set -eu
 FROTH=build/froth REFERENCE=""
 for a in "$@"; do
@@ -107,16 +105,11 @@ declare -A EV_SUFFIX=([A]="" [B]="" [C]=_3)
 declare -A EV_PRE=([A]="U; g 200" [B]="U; g 200" [C]="U; g 300; hessian_seek; hessian_seek")
 declare -A EV_STEP=([A]="r; u; V; g 3; hessian" [B]="r; g 3; hessian" [C]="r; u; V; g 3; hessian")
 declare -A EV_MAX=([A]=5 [B]=5 [C]=3)
-# froth's (h, tol) per problem and target, from the search above
-declare -A FROTH_H=([db11,1e-3]=0.2 [db11,3e-4]=0.13 [db11,1e-4]=0.15
-                    [db12,1e-3]=0.2 [db12,3e-4]=0.12 [db12,1e-4]=0.14
-                    [triple,1e-3]=0.2 [triple,3e-4]=0.12 [triple,1e-4]=0.14)
-declare -A FROTH_TOL=([db11,1e-3]=3e-2 [db11,3e-4]=3e-2 [db11,1e-4]=1e-2
-                      [db12,1e-3]=3e-2 [db12,3e-4]=3e-2 [db12,1e-4]=1e-2
-                      [triple,1e-3]=3e-2 [triple,3e-4]=3e-2 [triple,1e-4]=1e-2)
-declare -A FROTH_LEVELS=([db11,1e-3]=1 [db11,3e-4]=1 [db11,1e-4]=2
-                         [db12,1e-3]=1 [db12,3e-4]=1 [db12,1e-4]=2
-                         [triple,1e-3]=1 [triple,3e-4]=1 [triple,1e-4]=2)
+# froth's run per (problem, target): statics_froth.lua's arguments (see the header).
+B1="start=boxes cut=1 pre=1 levels=2 tol=1e-1" B2="start=boxes cut=1 pre=2 levels=2 tol=1e-1"
+declare -A FROTH_ARGS=([db11,1e-3]="$B1" [db11,3e-4]="$B2" [db11,1e-4]="h=0.15 levels=2 tol=1e-2"
+                       [db12,1e-3]="$B1" [db12,3e-4]="$B2" [db12,1e-4]="h=0.14 levels=2 tol=1e-1"
+                       [triple,1e-3]="$B1" [triple,3e-4]="$B2" [triple,1e-4]="h=0.14 levels=2 tol=1e-2")
 
 now() { date +%s.%N; }
 # best_of OUT cmd...: runs cmd REPEAT times, prints the fastest wall time in seconds and
@@ -169,8 +162,8 @@ for k in "${EV_RUNS[@]}"; do
   echo "  $k: ${FE[db11]}${EV_SUFFIX[$k]}.fe / ${FE[triple]}${EV_SUFFIX[$k]}.fe, PRE \"${EV_PRE[$k]}\", per level \"${EV_STEP[$k]}\""
 done
 echo
-echo "| problem | target | froth h, levels | tol | vertices | froth s | minimize s (iterations) | froth error | volume error | Evolver run, level | vertices | Evolver s | Evolver error | froth/Evolver |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|"
+echo "| problem | target | froth run | vertices | froth s | minimize s (iterations) | froth error | volume error | Evolver run, level | vertices | Evolver s | Evolver error | froth/Evolver |"
+echo "|---|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|"
 for p in $PROBLEMS; do
   # Evolver: per candidate, the lowest level that reaches each target (one run to its max)
   declare -A EV_LEVEL=()
@@ -182,8 +175,9 @@ for p in $PROBLEMS; do
     done
   done
   for t in $TARGETS; do
-    h=${FROTH_H[$p,$t]} tol=${FROTH_TOL[$p,$t]} levels=${FROTH_LEVELS[$p,$t]}
-    fs=$(best_of "$TMP/froth.out" timeout 600 "$FROTH" "$DIR/statics_froth.lua" problem="$p" h="$h" tol="$tol" levels="$levels" ref="${REF[$p]}")
+    fargs=${FROTH_ARGS[$p,$t]}
+    # shellcheck disable=SC2086 # the arguments are words
+    fs=$(best_of "$TMP/froth.out" timeout 600 "$FROTH" "$DIR/statics_froth.lua" problem="$p" $fargs ref="${REF[$p]}")
     read -r _ _ _ _ fv fit fmin farea _ fverr fstop < <(grep '^FROTH '"$p" "$TMP/froth.out") ||
       { echo "statics.sh: no result line from froth:" >&2; cat "$TMP/froth.out" >&2; exit 1; }
     ferr=$(relerr "$farea" "${REF[$p]}")
@@ -204,8 +198,8 @@ for p in $PROBLEMS; do
       fi
     done
     ratio=$( [ -n "$es" ] && awk -v a="$fs" -v b="$es" 'BEGIN { printf "%.2f", a / b }' || echo "-")
-    printf "| %s | %s | %s | %s | %s | %.3f | %s (%s) | %s | %s | %s | %s | %s | %s | %s |\n" "$p" \
-      "$t" "$h, $levels" "$tol" "$fv" "$fs" "$fmin" "$fit" "$ferr" "$fverr" "$erun" "$ev" \
+    printf "| %s | %s | %s | %s | %.3f | %s (%s) | %s | %s | %s | %s | %s | %s | %s |\n" "$p" \
+      "$t" "$fargs" "$fv" "$fs" "$fmin" "$fit" "$ferr" "$fverr" "$erun" "$ev" \
       "${es:+$(printf %.3f "$es")}" "$eerr" "$ratio"
   done
   unset EV_LEVEL

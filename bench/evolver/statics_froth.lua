@@ -10,6 +10,8 @@
 --           (three_cells.fe), volumes (1, 1, 1): the standard triple bubble; no closed form,
 --           reference 13.1281682 = Evolver's levels 5 and 6 extrapolated (statics.sh)
 --   froth bench/evolver/statics_froth.lua problem=db11 h=0.1 tol=1e-2 [levels=2]
+-- start=boxes cut=N pre=P: the boxes of Evolver's datafiles without gmsh (froth.box_cells, h
+-- ignored), refined P times before the first minimize.
 -- levels = L > 0 runs Evolver's coarse-to-fine schedule: minimize on the gmsh mesh, then L times
 -- c:refine() and c:minimize{tol, tau_start = 1e4} (near an equilibrium the ramp of small first
 -- steps is not needed: the first step is already the Dirichlet limit).
@@ -18,7 +20,7 @@
 -- pair per process, so the process's seconds include startup and meshing.
 local opts = require("froth.script").options({problem = "db11", h = 0.1, tol = 1e-2,
                                               max_iterations = 1000, ref = 0,
-                                              levels = 0}, arg)
+                                              levels = 0, start = "gmsh", cut = 1, pre = 2}, arg)
 local function box(x, y, z, sx, sy, sz) return {"box", min = {x, y, z}, size = {sx, sy, sz}} end
 local problems = {
   db11 = {ref = 3 * (9 * math.pi) ^ (1 / 3), solids = {box(0, 0, 0, 1, 1, 1), box(1, 0, 0, 1, 1, 1)}},
@@ -27,6 +29,25 @@ local problems = {
   triple = {ref = 13.1281682, solids = {box(0, 0, 0, 1, 1, 1), box(1, 0, 0, 1, 1, 1),
                                           box(0, 0, 1, 2, 1, 0.5)}},
 }
+-- start = "boxes": the same boxes as Evolver's datafiles, built by froth.box_cells without gmsh
+-- (every lattice interval cut into `cut` parts, like make_cells_fe.py's n; every rectangle into
+-- 4 triangles at its centre), refined `pre` times before the first minimize.
+local function boxes(problem, cut)
+  local function axis(points)
+    local t = {points[1]}
+    for n = 2, #points do
+      for m = 1, cut do t[#t + 1] = points[n - 1] + (points[n] - points[n - 1]) * m / cut end
+    end
+    return t
+  end
+  local z = problem == "triple" and {0, 1, 1.5} or {0, 1}
+  return froth.box_cells{x = axis{0, 1, 2}, y = axis{0, 1}, z = axis(z), cell = function(i, _, k)
+    local cube = i <= cut and 1 or 2
+    if problem == "triple" and k > cut then return 3 end
+    return cube
+  end}
+end
+
 local p = problems[opts.problem]
 if not p then error("statics_froth.lua: problem must be db11, db12 or triple, got " .. opts.problem) end
 local ref = opts.ref ~= 0 and opts.ref or p.ref
@@ -40,7 +61,13 @@ end
 print("FROTH problem  h      tol     vertices  iterations  minimize_s  area             error       volume_error  stop")
 for _, h in ipairs(list(opts.h)) do
   for _, tol in ipairs(list(opts.tol)) do
-    local c = froth.fragment{solids = p.solids, h = h}
+    local c
+    if opts.start == "boxes" then
+      c = boxes(opts.problem, math.floor(opts.cut))
+      for _ = 1, opts.pre do c:refine() end
+    else
+      c = froth.fragment{solids = p.solids, h = h}
+    end
     for b, v in pairs(p.volumes or {}) do c:set_volume(b, v) end
     local r = c:minimize{tol = tol, max_iterations = opts.max_iterations}
     local iterations, seconds = r.iterations, r.wall_s

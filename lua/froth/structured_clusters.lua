@@ -104,4 +104,102 @@ function M.half_ellipsoid_on_plane(opts)
                        walls = froth.plane{normal = {0, 0, 1}}}, h
 end
 
+--- Box cells on a lattice, meshed without gmsh as Surface Evolver's box datafiles are: the
+--- lattice planes x = x[1] < x[2] < ..., y = ..., z = ... cut space into cells, cell (i, j, k)
+--- (1-based, i < #x) belongs to body cell(i, j, k) (0 or nil: outside), and every lattice
+--- rectangle between two different regions is a face, split into 4 triangles at its centre. One
+--- surface per pair of regions (its facets oriented from the lower region id to the higher), so
+--- a film between two cells, or between a cell and the outside, is one surface. Options: x, y, z
+--- (arrays of increasing numbers, at least 2 each), cell (a function (i, j, k) -> body id or 0).
+--- Refine with c:refine(). The double bubble from two unit cubes:
+---   froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
+function M.box_cells(opts)
+  local name = "box_cells"
+  opts = options(name, opts, {x = true, y = true, z = true, cell = true})
+  local grid = {}
+  for d, key in ipairs{"x", "y", "z"} do
+    local g = opts[key]
+    if type(g) ~= "table" or #g < 2 then fail(name, "%s must be an array of at least 2 numbers", key) end
+    for n = 1, #g do
+      if type(g[n]) ~= "number" or (n > 1 and not (g[n] > g[n - 1])) then
+        fail(name, "%s must be increasing numbers, %s[%d] = %s", key, key, n, tostring(g[n]))
+      end
+    end
+    grid[d] = g
+  end
+  if type(opts.cell) ~= "function" then fail(name, "cell must be a function (i, j, k) -> body id") end
+  local n = {#grid[1], #grid[2], #grid[3]}
+  local bodies = 0
+  local function region(c) -- c = {i, j, k} 1-based cell indices
+    for d = 1, 3 do
+      if c[d] < 1 or c[d] >= n[d] then return 0 end
+    end
+    local b = opts.cell(c[1], c[2], c[3]) or 0
+    if math.type(b) ~= "integer" or b < 0 then
+      fail(name, "cell(%d, %d, %d) must be a body id >= 0, got %s", c[1], c[2], c[3], tostring(b))
+    end
+    bodies = math.max(bodies, b)
+    return b
+  end
+  local vertices, index = {}, {}
+  local function corner(p) -- p = {i, j, k} 1-based lattice point
+    local key = p[1] .. "," .. p[2] .. "," .. p[3]
+    if not index[key] then
+      vertices[#vertices + 1] = {grid[1][p[1]], grid[2][p[2]], grid[3][p[3]]}
+      index[key] = #vertices
+    end
+    return index[key]
+  end
+  local surfaces, surface_of, pairs_of = {}, {}, {}
+  for d = 1, 3 do
+    local u, v = d % 3 + 1, (d + 1) % 3 + 1 -- e_u x e_v = e_d
+    local p = {}
+    for a = 1, n[d] do
+      for b = 1, n[u] - 1 do
+        for c = 1, n[v] - 1 do
+          local lo, hi = {}, {}
+          lo[d], lo[u], lo[v] = a - 1, b, c
+          hi[d], hi[u], hi[v] = a, b, c
+          local r1, r2 = region(lo), region(hi)
+          if r1 ~= r2 then
+            local key = math.min(r1, r2) .. "," .. math.max(r1, r2)
+            if not surface_of[key] then
+              surfaces[#surfaces + 1] = {}
+              surface_of[key] = #surfaces
+              pairs_of[#surfaces] = {r1, r2}
+            end
+            local q = {}
+            for e, off in ipairs{{0, 0}, {1, 0}, {1, 1}, {0, 1}} do
+              p[d], p[u], p[v] = a, b + off[1], c + off[2]
+              q[e] = corner(p)
+            end
+            local centre = {}
+            for m = 1, 3 do
+              centre[m] = (vertices[q[1]][m] + vertices[q[3]][m]) / 2
+            end
+            vertices[#vertices + 1] = centre
+            local mid, facets = #vertices, surfaces[surface_of[key]]
+            for e = 1, 4 do -- counterclockwise about e_d: normal +e_d, from r1 to r2
+              local f = {q[e], q[e % 4 + 1], mid}
+              if r1 > r2 then f[1], f[2] = f[2], f[1] end
+              facets[#facets + 1] = f
+            end
+          end
+        end
+      end
+    end
+  end
+  local body_surfaces = {}
+  for b = 1, bodies do body_surfaces[b] = {} end
+  for s, pr in ipairs(pairs_of) do
+    for _, r in ipairs(pr) do
+      if r > 0 then table.insert(body_surfaces[r], s) end
+    end
+  end
+  for b = 1, bodies do
+    if #body_surfaces[b] == 0 then fail(name, "body %d has no cells", b) end
+  end
+  return require("froth").cluster{vertices = vertices, surfaces = surfaces, bodies = body_surfaces}
+end
+
 return M

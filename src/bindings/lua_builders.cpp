@@ -9,8 +9,7 @@
 #include "bindings/luax.h"
 
 #ifdef FROTH_HAVE_GMSH
-#include "builders/fragment.h"
-#include "builders/gmsh_builder.h"
+#include "bindings/gmsh_plugin.h"
 #endif
 
 #include <climits>
@@ -169,7 +168,7 @@ int l_double_bubble(lua_State* L) {
     d.sigma = read_sigmas(L, o, "double_bubble");
     o.finish();
     return guarded(L, [&] {
-        push_cluster(L, build_double_bubble(d));
+        push_cluster(L, gmsh_builders().double_bubble(d));
         return 1;
     });
 }
@@ -192,7 +191,7 @@ int l_sphere(lua_State* L) {
     lua_pop(L, 1);
     o.finish();
     return guarded(L, [&] {
-        push_cluster(L, build_sphere(s));
+        push_cluster(L, gmsh_builders().sphere(s));
         return 1;
     });
 }
@@ -205,7 +204,7 @@ int l_read(lua_State* L) {
     lua_pop(L, 1);
     o.finish();
     return guarded(L, [&] {
-        ClusterSpec spec = read_msh(path);
+        ClusterSpec spec = gmsh_builders().read_msh(path);
         spec.walls = std::move(walls);
         push_cluster(L, std::move(spec));
         return 1;
@@ -448,7 +447,7 @@ int l_fragment(lua_State* L) {
     if (!walls.empty()) std::swap(sigma_of, f.sigma_of);
     ClusterSpec spec;
     guarded(L, [&] {
-        spec = build_fragment(f);
+        spec = gmsh_builders().fragment(f);
         return 0;
     });
     if (lua_getfield(L, 1, "transform") == LUA_TFUNCTION)

@@ -17,7 +17,15 @@ namespace froth {
 enum class SolidKind { ball, box, cylinder, torus };
 
 /// "ball", "box", "cylinder", "torus".
-const char* solid_kind_name(SolidKind kind);
+inline const char* solid_kind_name(SolidKind kind) {
+    switch (kind) {
+    case SolidKind::ball: return "ball";
+    case SolidKind::box: return "box";
+    case SolidKind::cylinder: return "cylinder";
+    case SolidKind::torus: return "torus";
+    }
+    return "?";
+}
 
 /// One input solid. Only the fields of its kind are used. Transformations apply in the order
 /// scale, rotate (both about the solid's center), translate.

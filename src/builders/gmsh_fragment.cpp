@@ -18,20 +18,6 @@
 namespace froth {
 using namespace gmsh_detail;
 
-const char* solid_kind_name(SolidKind kind) {
-    switch (kind) {
-    case SolidKind::ball:
-        return "ball";
-    case SolidKind::box:
-        return "box";
-    case SolidKind::cylinder:
-        return "cylinder";
-    case SolidKind::torus:
-        return "torus";
-    }
-    return "?";
-}
-
 Vec3 solid_center(const Solid& s) {
     switch (s.kind) {
     case SolidKind::box:
