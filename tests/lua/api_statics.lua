@@ -115,6 +115,30 @@ local l = froth.double_bubble{h = 0.25, split = 0.3}
 local rl = l:evolve{flow = "sd", tau = 1e-3, steps = 100, progress = false}
 T.assert_true(rl.volume_loss > 1e-5, "the seed's scheme loses volume (the default)", tostring(rl.volume_loss))
 
+-- froth.box_cells: Evolver's box cells without gmsh; exact volumes, the junction counts of the
+-- standard double and triple bubbles, and refine + minimize to the double bubble.
+local cubes = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
+T.assert_equal(T.counts(cubes), "3/1/0/2", "two cubes: 3 films, 1 triple line, 2 bodies")
+T.assert_equal(cubes:info().vertices, 12 + 11, "two cubes: 12 corners and 11 face centres")
+T.assert_true(cubes:volumes()[1] == 1 and cubes:volumes()[2] == 1, "two cubes: volumes 1 exactly")
+T.assert_near(cubes:area(), 11, 1e-13, "two cubes: 11 unit faces")
+local cells = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1, 1.5},
+                              cell = function(i, _, k) return k == 1 and i or 3 end}
+T.assert_equal(T.counts(cells), "6/4/2/3", "three cells: 6 films, 4 triple lines, 2 quadruple points")
+cubes:refine(); cubes:refine()
+local rc = cubes:minimize{tol = 1e-2}
+T.assert_true(T.rel(rc.energy, 3 * (9 * math.pi) ^ (1 / 3)) <= 5e-3,
+              "two cubes refined twice and minimised: the double bubble within 0.5%", tostring(rc.energy))
+T.check_error("box_cells: x must be an array of at least 2 numbers", froth.box_cells,
+              {x = {0}, y = {0, 1}, z = {0, 1}, cell = function() return 1 end})
+T.check_error("box_cells: y must be increasing numbers, y[2] = 0", froth.box_cells,
+              {x = {0, 1}, y = {0, 0}, z = {0, 1}, cell = function() return 1 end})
+T.check_error("box_cells: cell(1, 1, 1) must be a body id >= 0, got -1", froth.box_cells,
+              {x = {0, 1}, y = {0, 1}, z = {0, 1}, cell = function() return -1 end})
+T.check_error("box_cells: body 1 has no cells", froth.box_cells,
+              {x = {0, 1}, y = {0, 1}, z = {0, 1}, cell = function() return 2 end})
+T.check_error("box_cells: cell must be a function", froth.box_cells, {x = {0, 1}, y = {0, 1}, z = {0, 1}})
+
 -- Bad input: a Lua error naming the value; the cluster unchanged.
 local b = froth.double_bubble{h = 0.3}
 local X = positions(b)
