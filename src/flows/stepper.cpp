@@ -243,7 +243,7 @@ Eigen::VectorXd TimeStepper::solve_exact_volumes(Cluster& c, double tau, const P
     // The fixed point of exact_volumes.h over the weights w(dX): the first solve has the
     // weights of the start (m omega at X^m, or those of the last step's velocity when this step
     // continues it), the next ones add the weights' derivative C to the matrix (a Newton step in
-    // dX): 3-6 solves, each on one factorisation reused through GMRES.
+    // dX): 2-4 solves, each on one factorisation reused through GMRES.
     const PairGeometry g = pair_geometry(c);
     const double size = cluster_size(c.positions());
     const int n = c.n_vertices(), nb = c.n_bodies();
