@@ -70,7 +70,7 @@ for _, case in ipairs(cases) do
   print(("%s: %s, %d vertices, %d facets"):format(case, what, info.vertices, info.facets))
   local worst, iterations = 0, 0
   local r = c:evolve(script.evolve_options(opts, {
-    flow = "sd", tau = opts.tau, tau_start = 1e-7,
+    flow = "sd", exact_volumes = false, tau = opts.tau, tau_start = 1e-7,
     on_step = function(s)
       worst = math.max(worst, (s.energy - s.energy_before) / s.energy_before)
       iterations = math.max(iterations, s.fixed_point_iterations)

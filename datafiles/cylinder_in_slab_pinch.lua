@@ -32,7 +32,7 @@ end
 
 local drift = 0
 local r = c:evolve(script.evolve_options(opts, {
-  flow = "sd", tau = opts.tau, tau_start = opts.tau_start, every = opts.every,
+  flow = "sd", exact_volumes = false, tau = opts.tau, tau_start = opts.tau_start, every = opts.every,
   on_step = function(s) drift = math.max(drift, s.wall_drift) end}))
 
 local t_stop = r.event and r.event.t or r.t

@@ -31,7 +31,7 @@ local V0 = c:volumes()[1]
 
 local drift = 0
 local r = c:evolve(script.evolve_options(opts, {
-  flow = "sd", tau = opts.tau, tau_start = opts.tau_start, project = opts.project == 1,
+  flow = "sd", exact_volumes = false, tau = opts.tau, tau_start = opts.tau_start, project = opts.project == 1,
   every = opts.every, on_step = function(s) drift = math.max(drift, s.wall_drift) end}))
 
 local measure = require("froth.measure")

@@ -103,7 +103,7 @@ end
 --- Returns the evolve result (with largest_wall_drift) and the cylinder_fit.
 function M.run_in_slab(c, opts)
   local r = M.evolve_tracking_drift(c, script.evolve_options(opts, {
-    flow = "sd", tau = opts.tau, tau_start = opts.tau_start, every = opts.every}))
+    flow = "sd", exact_volumes = false, tau = opts.tau, tau_start = opts.tau_start, every = opts.every}))
   local fit = M.cylinder_fit(c, opts.rho)
   local ca = r.contact_angles
   print(("t = %.4g after %d steps (%.1f s): %s"):format(r.t, r.steps, r.wall_s, r.stop_reason))

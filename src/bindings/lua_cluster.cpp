@@ -262,7 +262,7 @@ int l_step(lua_State* L) {
     const std::string flow = o.string("flow");
     const double tau = o.number("tau");
     const bool project = o.boolean("project", false);
-    const bool exact = o.boolean("exact_volumes", false);
+    const bool exact = o.boolean("exact_volumes", true);
     const FixedPointOptions fp = read_fixed_point(L, o, "step: fixed_point");
     o.finish();
     return guarded(L, [&] {
@@ -314,7 +314,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     e.output = o.string("output", "");
     e.history = o.string("history", "");
     e.project_onto_walls = o.boolean("project", false);
-    e.exact_volumes = o.boolean("exact_volumes", false);
+    e.exact_volumes = o.boolean("exact_volumes", true);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
     e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;
     if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))

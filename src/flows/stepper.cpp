@@ -235,6 +235,14 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
         c.set_time(t_before);
         throw;
     }
+    // A scheme that does not hold the volumes (mean curvature flow, the seed's linear surface
+    // diffusion) moves the targets with them: the targets are the volumes the cluster is meant
+    // to have now, so a later volume-exact step or minimize keeps these volumes instead of
+    // undoing the flow (an explicit c:set_volume target is kept only by the volume-exact steps).
+    if (!exact_sd && c.n_bodies() > 0) {
+        const std::vector<double> initial = c.initial_volumes();
+        c.set_volume_references(initial, report.volumes);
+    }
     return report;
 }
 

@@ -86,10 +86,9 @@ class TimeStepper {
     /// \throw InvalidInput unless tol > 0, max_iterations >= 2 and max_halvings in 0..20.
     void set_fixed_point(FixedPointOptions o);
     const FixedPointOptions& fixed_point() const { return fixed_point_; }
-    /// With exact, surface diffusion keeps every body at its target volume (the
-    /// structure-preserving step of assembly/exact_volumes.h, 2-4 solves per step); without
-    /// (the default), it runs the seed's linear scheme (3.6)/(3.8), which loses O(tau^2) of
-    /// volume per step.
+    /// With exact (the default), surface diffusion keeps every body at its target volume (the
+    /// structure-preserving step of assembly/exact_volumes.h, 2-4 solves per step); without,
+    /// it runs the seed's linear scheme (3.6)/(3.8), which loses O(tau^2) of volume per step.
     void set_exact_volumes(bool exact) { exact_volumes_ = exact; }
     bool exact_volumes() const { return exact_volumes_; }
 
@@ -111,7 +110,7 @@ class TimeStepper {
     Eigen::VectorXd solve_exact_volumes(Cluster& c, double tau, const PositionBasis& P,
                                         StepReport& report);
     FixedPointOptions fixed_point_;
-    bool exact_volumes_ = false;
+    bool exact_volumes_ = true;
     // Set during a volume-exact step: the pair weights and kappa rows assemble() uses.
     const PairGeometry* weights_ = nullptr;
     const Eigen::VectorXd* kappa_rhs_ = nullptr;

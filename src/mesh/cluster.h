@@ -164,7 +164,9 @@ class Cluster {
     /// Body volumes when the cluster was made: the reference for volume-loss reports.
     const std::vector<double>& initial_volumes() const { return initial_volumes_; }
     /// The volume each body is held at by the volume-exact schemes (surface diffusion with
-    /// exact_volumes, minimize): the initial volume unless set_target_volume changed it.
+    /// exact_volumes, minimize): the initial volume unless set_target_volume changed it, or a
+    /// step of a scheme that does not hold volumes (MCF, the seed's SD) moved them (the targets
+    /// then follow: TimeStepper::step sets them to the volumes after such a step).
     const std::vector<double>& target_volumes() const { return target_volumes_; }
     /// \throw InvalidInput for a body id out of range or a volume that is not positive and
     /// finite (the message names the body and the value).

@@ -35,9 +35,9 @@ struct EvolveOptions {
     WatchOptions watch;
     /// The r > 1 iteration of every step (flows/stepper.h).
     FixedPointOptions fixed_point;
-    /// Surface diffusion holds the bodies at their target volumes exactly (TimeStepper::
-    /// set_exact_volumes); false runs the seed's linear scheme.
-    bool exact_volumes = false;
+    /// Surface diffusion holds the bodies at their target volumes exactly (the default;
+    /// TimeStepper::set_exact_volumes); false runs the seed's linear scheme.
+    bool exact_volumes = true;
 };
 
 struct EvolveResult {

@@ -301,22 +301,22 @@ end
 -- a step of beta tau with beta = 1 ((3.7a)/(3.8a) divide by tau and multiply by beta). With
 -- beta = "gamma" and gamma = isotropic(2) the velocity is beta gamma-curvature = 2 * 2 kappa.
 for _, flow in ipairs{"mcf", "sd"} do
-  local ref = with(); ref:step{flow = flow, tau = 2e-3}
+  local ref = with(); ref:step{flow = flow, tau = 2e-3, exact_volumes = false}
   local moved = maxdiff(ref, db)
   T.assert_true(moved > 1e-3, flow .. ": the reference step moves the mesh", moved)
-  local b2 = with(nil, 2); b2:step{flow = flow, tau = 1e-3}
+  local b2 = with(nil, 2); b2:step{flow = flow, tau = 1e-3, exact_volumes = false}
   T.assert_true(maxdiff(b2, ref) <= 1e-9 * moved, flow .. ": beta = 2 doubles the velocity",
                 maxdiff(b2, ref))
-  local bf = with(nil, function() return 2 end); bf:step{flow = flow, tau = 1e-3}
+  local bf = with(nil, function() return 2 end); bf:step{flow = flow, tau = 1e-3, exact_volumes = false}
   T.assert_true(maxdiff(bf, ref) <= 1e-9 * moved, flow .. ": a function returning 2 = beta 2",
                 maxdiff(bf, ref))
-  local bg = with(A.isotropic(2), "gamma"); bg:step{flow = flow, tau = 0.5e-3}
+  local bg = with(A.isotropic(2), "gamma"); bg:step{flow = flow, tau = 0.5e-3, exact_volumes = false}
   T.assert_true(maxdiff(bg, ref) <= 1e-9 * moved, flow .. ": beta = gamma = 2|nu| with gamma 2|nu|",
                 maxdiff(bg, ref))
-  local i1 = with(A.isotropic(1)); i1:step{flow = flow, tau = 2e-3}
+  local i1 = with(A.isotropic(1)); i1:step{flow = flow, tau = 2e-3, exact_volumes = false}
   T.assert_true(maxdiff(i1, ref) <= 1e-9 * moved, flow .. ": isotropic(1) = no anisotropy",
                 maxdiff(i1, ref))
-  local half = with(); half:step{flow = flow, tau = 1e-3}
+  local half = with(); half:step{flow = flow, tau = 1e-3, exact_volumes = false}
   T.assert_true(maxdiff(half, ref) > 1e-2 * moved, flow .. ": (and half the step is different)")
 end
 
@@ -327,7 +327,7 @@ local fm = with(nil, function(nx, ny, nz)
   worst_unit = math.max(worst_unit, math.abs(sqrt(nx * nx + ny * ny + nz * nz) - 1))
   return 1 + 0.5 * nz * nz
 end)
-local rf = fm:step{flow = "sd", tau = 1e-3}
+local rf = fm:step{flow = "sd", tau = 1e-3, exact_volumes = false}
 T.assert_true(calls > 0 and worst_unit < 1e-12, "the mobility function gets unit normals",
               calls .. " calls, |nu| - 1 up to " .. worst_unit)
 T.assert_true(rf.energy <= rf.energy_before, "sd with a mobility function decreases the energy")
@@ -335,7 +335,7 @@ T.assert_true(rf.energy <= rf.energy_before, "sd with a mobility function decrea
 -- r = 1: no fixed-point iteration, the energy never increases.
 local c1 = with(A.l1{eps = 0.1})
 for _, flow in ipairs{"sd", "mcf", "sd"} do
-  local r = c1:step{flow = flow, tau = 1e-3}
+  local r = c1:step{flow = flow, tau = 1e-3, exact_volumes = false}
   T.assert_equal(r.fixed_point_iterations, 0, flow .. " r = 1: fixed_point_iterations = 0")
   T.assert_equal(r.fixed_point_change, 0, flow .. " r = 1: fixed_point_change = 0")
   T.assert_equal(r.substeps, 1, flow .. " r = 1: one substep")
@@ -343,13 +343,13 @@ for _, flow in ipairs{"sd", "mcf", "sd"} do
                 r.energy .. " > " .. r.energy_before)
   T.assert_near(r.energy, c1:energy(), 0, "the step's energy is the anisotropic energy")
 end
-local plain = db:clone():step{flow = "sd", tau = 1e-3}
+local plain = db:clone():step{flow = "sd", tau = 1e-3, exact_volumes = false}
 T.assert_equal(plain.fixed_point_iterations, 0, "isotropic: fixed_point_iterations = 0")
 
 -- r = 3: Newton's method for (3.9) converges to the tolerance in a few solves.
 local c3 = with(A.l1{eps = 0.1, r = 3})
 for _, flow in ipairs{"sd", "mcf"} do
-  local r = c3:step{flow = flow, tau = 1e-3}
+  local r = c3:step{flow = flow, tau = 1e-3, exact_volumes = false}
   T.assert_true(r.fixed_point_iterations >= 2 and r.fixed_point_iterations <= 60,
                 flow .. " r = 3: fixed_point_iterations in 2..60", r.fixed_point_iterations)
   T.assert_true(r.fixed_point_change > 0 and r.fixed_point_change <= 1e-8,
@@ -357,8 +357,8 @@ for _, flow in ipairs{"sd", "mcf"} do
   T.assert_true(r.substeps >= 1, flow .. " r = 3: substeps >= 1", r.substeps)
   T.assert_true(r.energy <= r.energy_before, flow .. " r = 3: the energy does not increase")
 end
-local loose = with(A.l1{eps = 0.1, r = 3}):step{flow = "sd", tau = 1e-3, fixed_point = {tol = 1e-4}}
-local tight = with(A.l1{eps = 0.1, r = 3}):step{flow = "sd", tau = 1e-3, fixed_point = {tol = 1e-11}}
+local loose = with(A.l1{eps = 0.1, r = 3}):step{flow = "sd", tau = 1e-3, exact_volumes = false, fixed_point = {tol = 1e-4}, exact_volumes = false}
+local tight = with(A.l1{eps = 0.1, r = 3}):step{flow = "sd", tau = 1e-3, exact_volumes = false, fixed_point = {tol = 1e-11}, exact_volumes = false}
 T.assert_true(loose.fixed_point_change <= 1e-4 and tight.fixed_point_change <= 1e-11 and
               loose.fixed_point_iterations < tight.fixed_point_iterations,
               "fixed_point.tol: a tighter tolerance takes more solves",
@@ -366,9 +366,9 @@ T.assert_true(loose.fixed_point_change <= 1e-4 and tight.fixed_point_change <= 1
 
 -- Too few solves allowed: the step is split into halves (substeps), which need fewer solves each;
 -- a full step here needs more than 10.
-local need = with(A.l1{eps = 0.1, r = 3}):step{flow = "sd", tau = 1e-3}.fixed_point_iterations
+local need = with(A.l1{eps = 0.1, r = 3}):step{flow = "sd", tau = 1e-3, exact_volumes = false}.fixed_point_iterations
 local cs = with(A.l1{eps = 0.1, r = 3})
-local ok, rs = pcall(cs.step, cs, {flow = "sd", tau = 1e-3,
+local ok, rs = pcall(cs.step, cs, {flow = "sd", tau = 1e-3, exact_volumes = false,
                                    fixed_point = {max_iterations = need - 1, max_halvings = 6}})
 T.assert_true(ok, "a step with halvings converges", tostring(rs))
 if ok then
@@ -384,22 +384,22 @@ end
 local cn = with(A.l1{eps = 0.1, r = 3})
 local before = cn:clone()
 bad("step: Newton's method for the r > 1 system (3.9) did not converge in 2 solves", cn.step, cn,
-    {flow = "sd", tau = 1e-3, fixed_point = {max_iterations = 2, max_halvings = 0}})
+    {flow = "sd", tau = 1e-3, exact_volumes = false, fixed_point = {max_iterations = 2, max_halvings = 0}})
 bad("after 2 halvings of the step); the cluster is unchanged", cn.step, cn,
-    {flow = "sd", tau = 1e-3, fixed_point = {max_iterations = 2, max_halvings = 2}})
+    {flow = "sd", tau = 1e-3, exact_volumes = false, fixed_point = {max_iterations = 2, max_halvings = 2}})
 T.assert_true(cn:time() == 0 and maxdiff(cn, before) == 0, "no convergence: the cluster is unchanged")
-local rn = cn:evolve{flow = "sd", tau = 1e-3, steps = 3, progress = false,
+local rn = cn:evolve{flow = "sd", tau = 1e-3, exact_volumes = false, steps = 3, progress = false,
                      fixed_point = {max_iterations = 2, max_halvings = 0}}
 T.assert_equal(rn.steps, 0, "evolve: no step taken")
 T.assert_true(rn.stop_reason:find("no convergence: step: Newton's method for the r > 1 system", 1, true) == 1,
               "evolve stops with 'no convergence: ...'", rn.stop_reason)
 T.assert_true(cn:time() == 0 and maxdiff(cn, before) == 0, "evolve: the cluster is unchanged")
 -- Options are per call: the next step uses the defaults again.
-T.assert_true(cn:step{flow = "sd", tau = 1e-3}.fixed_point_iterations >= 2, "defaults again")
+T.assert_true(cn:step{flow = "sd", tau = 1e-3, exact_volumes = false}.fixed_point_iterations >= 2, "defaults again")
 
 -- evolve's on_step reports carry the fields.
 local seen = {}
-local re = with(A.l1{eps = 0.1, r = 3}):evolve{flow = "sd", tau = 1e-3, steps = 2, progress = false,
+local re = with(A.l1{eps = 0.1, r = 3}):evolve{flow = "sd", tau = 1e-3, exact_volumes = false, steps = 2, progress = false,
   fixed_point = {tol = 1e-9}, on_step = function(s) seen[#seen + 1] = s end}
 T.assert_true(re.steps == 2 and #seen == 2, "evolve with fixed_point takes its steps")
 for _, s in ipairs(seen) do
@@ -410,7 +410,7 @@ T.assert_true(re.max_energy_increase <= 0, "r = 3 evolve: no energy increase", r
 
 -- fixed_point option errors (checked before anything moves).
 local cf = with(A.l1{eps = 0.1, r = 3})
-local fp = function(o) return {flow = "sd", tau = 1e-3, fixed_point = o} end
+local fp = function(o) return {flow = "sd", tau = 1e-3, exact_volumes = false, fixed_point = o} end
 bad("fixed_point: tol must be positive and finite, got 0", cf.step, cf, fp{tol = 0})
 bad("fixed_point: tol must be positive and finite, got -1", cf.step, cf, fp{tol = -1})
 bad("step: fixed_point: unknown option 'tols'", cf.step, cf, fp{tols = 1e-8})
@@ -420,12 +420,12 @@ bad("step: fixed_point: option 'max_iterations' must be an integer", cf.step, cf
 bad("fixed_point: max_halvings must be in 0..20, got 21", cf.step, cf, fp{max_halvings = 21})
 bad("fixed_point: max_halvings must be in 0..20, got -1", cf.step, cf, fp{max_halvings = -1})
 bad("step: option 'fixed_point' must be a table {tol, max_iterations, max_halvings}", cf.step, cf,
-    {flow = "sd", tau = 1e-3, fixed_point = 5})
-local ev = function(o) return {flow = "sd", tau = 1e-3, steps = 1, fixed_point = o} end
+    {flow = "sd", tau = 1e-3, exact_volumes = false, fixed_point = 5})
+local ev = function(o) return {flow = "sd", tau = 1e-3, exact_volumes = false, steps = 1, fixed_point = o} end
 bad("fixed_point: tol must be positive and finite, got 0", cf.evolve, cf, ev{tol = 0})
 bad("evolve: fixed_point: unknown option 'foo'", cf.evolve, cf, ev{foo = 1})
 bad("evolve: option 'fixed_point' must be a table", cf.evolve, cf,
-    {flow = "sd", tau = 1e-3, steps = 1, fixed_point = true})
+    {flow = "sd", tau = 1e-3, exact_volumes = false, steps = 1, fixed_point = true})
 T.assert_true(cf:time() == 0 and maxdiff(cf, with()) == 0, "bad fixed_point options change nothing")
 
 -- A failing mobility function: the step raises an error and the cluster is unchanged.
@@ -443,7 +443,7 @@ bad("returned string where a number was expected", cm.step, cm, {flow = "sd", ta
 T.assert_true(cm:time() == 0 and maxdiff(cm, mref) == 0, "failed mobility: the cluster is unchanged")
 cm:set_mobility(2, function() return 0 end)
 bad("surface 2: the mobility function is 0", cm.evolve, cm,
-    {flow = "sd", tau = 1e-3, steps = 2, progress = false})
+    {flow = "sd", tau = 1e-3, exact_volumes = false, steps = 2, progress = false})
 T.assert_true(cm:time() == 0 and maxdiff(cm, mref) == 0, "evolve: the cluster is unchanged")
 
 -- A clone keeps anisotropy and mobility: it steps exactly like its original.
@@ -451,8 +451,8 @@ local orig = with(A.ellipsoidal{1, 2, 4}, 0.5)
 local copy = orig:clone()
 T.assert_equal(copy:mobility(1), 0.5, "a clone keeps the mobility")
 T.assert_equal(copy:energy(), orig:energy(), "a clone keeps the anisotropic energy")
-orig:step{flow = "sd", tau = 1e-3}
-copy:step{flow = "sd", tau = 1e-3}
+orig:step{flow = "sd", tau = 1e-3, exact_volumes = false}
+copy:step{flow = "sd", tau = 1e-3, exact_volumes = false}
 T.assert_equal(maxdiff(orig, copy), 0, "a clone steps like its original")
 
 -- The anisotropic force balance (2.3) at triple lines: report.angles.force_imbalance =
@@ -475,7 +475,7 @@ end
 local fl = froth.double_bubble{h = 0.15}
 fl:set_anisotropy(1, A.l1{eps = 0.1})
 local before = fl:report().angles.force_imbalance
-fl:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-6, T = 0.3, progress = false}
+fl:evolve{flow = "sd", tau = 1e-3, exact_volumes = false, tau_start = 1e-6, T = 0.3, progress = false}
 local after = fl:report().angles
 T.assert_true(before > 0.3 and after.force_imbalance < 0.06,
               "l1 cap: the force imbalance (2.3) falls below 0.06",

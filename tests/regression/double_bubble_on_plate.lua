@@ -20,7 +20,7 @@ T.assert_equal(info.triple_lines, 1, "one triple line")
 T.assert_true(not c:triple_lines()[1].closed, "the line ends on the plate")
 T.assert_near(c:volumes()[1], 1, 1e-12, "the lid closes body 1 exactly")
 
-local r = c:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-8, T = 0.5, progress = false}
+local r = c:evolve{flow = "sd", exact_volumes = false, tau = 1e-3, tau_start = 1e-8, T = 0.5, progress = false}
 local V = c:volumes()
 local exact = 0.5 * 14.960902 * ((V[1] + V[2]) / 2 / (math.pi / 3)) ^ (2 / 3)
 print(("%d vertices: area %.6f, exact %.6f (%+.3f%%), contact %.2f..%.2f, film angles %.2f..%.2f,"

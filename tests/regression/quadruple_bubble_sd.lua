@@ -13,7 +13,7 @@ T.assert_equal(info.surfaces, 9, "9 films")
 T.assert_equal(info.triple_lines, 8, "8 triple lines")
 T.assert_equal(info.quadruple_points, 4, "4 quadruple points")
 local q0 = c:report().quadruple_angles
-local r = c:evolve{flow = "sd", tau = 1e-3, T = 1, tau_start = 1e-8, progress = false}
+local r = c:evolve{flow = "sd", exact_volumes = false, tau = 1e-3, T = 1, tau_start = 1e-8, progress = false}
 
 local tetra = math.deg(math.acos(-1 / 3))
 local before = math.max(tetra - q0.min, q0.max - tetra)

@@ -37,7 +37,7 @@ local function decay_rate(l, eps, tau, duration)
   end}
   local a0 = amplitude(c, l)
   T.assert_near(a0, eps, 0.02 * eps, ("l = %d: the mesh carries the mode"):format(l))
-  local r = c:evolve{flow = "sd", tau = tau, T = duration, progress = false}
+  local r = c:evolve{flow = "sd", exact_volumes = false, tau = tau, T = duration, progress = false}
   local rate = -math.log(amplitude(c, l) / a0) / r.t
   local expected = math.log(1 + (l - 1) * l * (l + 1) * (l + 2) * tau) / tau
   print(("l = %d  vertices = %d  steps = %d  rate = %.2f  backward Euler %.2f  (exact %d)")

@@ -63,7 +63,7 @@ T.assert_near(before.force_imbalance, start_residual, 0.005, "residual of (1.26b
 T.assert_true(before.max_deviation < 0.1, "the half sphere meets the plane at 90 degrees",
               before.max_deviation)
 
-local r = drop:evolve{flow = "sd", tau = 1e-3, T = 0.5, progress = false}
+local r = drop:evolve{flow = "sd", exact_volumes = false, tau = 1e-3, T = 0.5, progress = false}
 local ca = r.contact_angles
 print(("residual %.4f -> %.4f (t = 0: exact %.4f); contact angles %.2f..%.2f, deviation %.2f"
        .. " (exact %.2f)"):format(before.force_imbalance, ca.force_imbalance, start_residual,

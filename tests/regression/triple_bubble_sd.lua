@@ -9,7 +9,7 @@ local T = require("froth.test")
 
 local c = froth.triple_bubble{vertices = 2000}
 T.assert_equal(c:info().quadruple_points, 2, "two quadruple points")
-local r = c:evolve{flow = "sd", tau = 2.5e-4, T = 1, progress = false}
+local r = c:evolve{flow = "sd", exact_volumes = false, tau = 2.5e-4, T = 1, progress = false}
 
 local tetra = math.deg(math.acos(-1 / 3))
 T.assert_true(math.abs(r.energy - 16.400195942768) <= 0.005 * 16.400195942768,

@@ -8,7 +8,7 @@ local T = require("froth.test")
 
 local c = froth.double_bubble{h = 0.08, sigma = {1, 1, 1.5}}
 local wall0 = c:area(3)
-local r = c:evolve{flow = "sd", tau = 1e-3, T = 1, progress = false}
+local r = c:evolve{flow = "sd", exact_volumes = false, tau = 1e-3, T = 1, progress = false}
 
 local caps = math.acos((1.5 ^ 2 - 2) / 2) * 180 / math.pi
 T.assert_near(caps, 82.819244, 1e-5, "Young's angle between the caps")

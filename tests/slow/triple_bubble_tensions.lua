@@ -12,7 +12,7 @@ local T = require("froth.test")
 
 local c = froth.triple_bubble{vertices = 6500, sigma = {[1] = 1.5}}
 local share0 = c:area(1) / c:area()
-local r = c:evolve{flow = "sd", tau = 1e-3, tau_start = 1e-7, T = 1, progress = false}
+local r = c:evolve{flow = "sd", exact_volumes = false, tau = 1e-3, tau_start = 1e-7, T = 1, progress = false}
 local share = c:area(1) / c:area()
 print(("%d vertices: Young deviation %.2f degrees, angles %.2f..%.2f, surface 1 share %.2f%% ->"
        .. " %.2f%%, loss %.3f%%, %.0f s"):format(c:info().vertices, r.angles.young_error,

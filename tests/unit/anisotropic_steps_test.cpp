@@ -182,6 +182,7 @@ TEST(AnisotropicSteps, NewtonsSolutionIsAFixedPointOfTheLaggedIteration) {
         Cluster c(test::icosphere(2));
         c.set_anisotropy(0, std::make_shared<const Anisotropy>(Anisotropy::fig3_right()));
         TimeStepper stepper;
+        stepper.set_exact_volumes(false); // the seed's scheme (3.6)/(3.8) is under test
         for (int m = 0; m < 3; ++m) {
             const Cluster before = c;
             const StepReport r = stepper.step(c, flow, 1e-3);
