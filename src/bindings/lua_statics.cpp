@@ -60,6 +60,7 @@ int l_pressures(lua_State* L) {
 /// c:set_volume(body, v)
 int l_set_volume(lua_State* L) {
     Cluster& c = self(L).cluster;
+    if (c.n_bodies() == 0) return luaL_error(L, "set_volume: the cluster has no bodies");
     const int b = check_id(L, 2, c.n_bodies(), "body", "bodies");
     if (lua_type(L, 3) != LUA_TNUMBER)
         return luaL_error(L, "set_volume: body %d: expected a volume (a number), got %s", b + 1,

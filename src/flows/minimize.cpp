@@ -83,12 +83,6 @@ EquilibriumState balance(const Variation& d) {
     return s;
 }
 
-double volume_error(const std::vector<double>& V, const std::vector<double>& target) {
-    double e = 0;
-    for (std::size_t b = 0; b < V.size(); ++b) e = std::max(e, std::abs(V[b] - target[b]) / target[b]);
-    return e;
-}
-
 void check(const MinimizeOptions& o) {
     if (!(std::isfinite(o.tol) && o.tol > 0))
         throw InvalidInput("minimize: tol must be positive and finite, got " + fmt(o.tol));
@@ -204,7 +198,7 @@ class Minimizer {
             const EquilibriumState s = balance(d);
             const std::vector<double> V = body_volumes(c_);
             r.residual = s.residual, r.pressures = s.pressures;
-            r.volume_error = volume_error(V, c_.target_volumes());
+            r.volume_error = max_target_deviation(c_, V);
             if (r.residual <= o_.tol && r.volume_error <= o_.volume_tol) {
                 r.converged = true, r.stop_reason = "converged";
                 break;
@@ -252,7 +246,7 @@ class Minimizer {
         }
         r.energy = energy(c_);
         r.volumes = body_volumes(c_);
-        r.volume_error = volume_error(r.volumes, c_.target_volumes());
+        r.volume_error = max_target_deviation(c_, r.volumes);
         r.wall_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         return r;
     }
@@ -330,7 +324,7 @@ class Minimizer {
             const std::vector<double> V = body_volumes(c_, X);
             Eigen::VectorXd dV(nb);
             for (int b = 0; b < nb; ++b) dV[b] = c_.target_volumes()[b] - V[b];
-            if (volume_error(V, c_.target_volumes()) <= 1e-15) return;
+            if (max_target_deviation(c_, V) <= 1e-15) return;
             const Eigen::SparseMatrix<double> G = body_volume_gradients(c_, X);
             Eigen::MatrixXd B(P.size(), nb);
             for (int b = 0; b < nb; ++b) B.col(b) = P.restrict(Eigen::VectorXd(G.col(b)));

@@ -298,10 +298,7 @@ Eigen::VectorXd TimeStepper::solve_exact_volumes(Cluster& c, double tau, const P
             change = std::max(change, (dz[v] - dX[v]).cwiseAbs().maxCoeff());
         }
         const std::vector<double> V = body_volumes(c, X);
-        report.volume_error = 0;
-        for (int b = 0; b < nb; ++b)
-            report.volume_error = std::max(report.volume_error, std::abs(c.target_volumes()[b] - V[b]) /
-                                                                    c.target_volumes()[b]);
+        report.volume_error = max_target_deviation(c, V);
         if (report.volume_error <= kVolumeTolerance || change <= 1e-15 * size) {
             last_end_ = X, last_z_ = z, last_tau_ = tau;
             return z;

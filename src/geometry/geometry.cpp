@@ -71,6 +71,15 @@ double max_volume_loss(const Cluster& c, const std::vector<double>& volumes) {
     return loss;
 }
 
+double max_target_deviation(const Cluster& c, const std::vector<double>& volumes) {
+    double e = 0;
+    for (std::size_t b = 0; b < volumes.size(); ++b) {
+        const double target = c.target_volumes()[b];
+        e = std::max(e, std::abs(volumes[b] - target) / target);
+    }
+    return e;
+}
+
 namespace {
 
 /// beta_i(nu_sigma) per facet and the lumped <beta(nu^m) ., .>^h masses of (3.7a)/(3.8a).

@@ -40,6 +40,9 @@ std::vector<double> body_volumes(const Cluster& c);
 std::vector<double> body_volumes(const Cluster& c, const std::vector<Vec3>& X);
 /// max_b |V_b - V_b(0)| / V_b(0); 0 for a cluster without bodies.
 double max_volume_loss(const Cluster& c, const std::vector<double>& volumes);
+/// max_b |V_b - V*_b| / V*_b against the target volumes (Cluster::target_volumes); 0 without
+/// bodies. What the volume-exact schemes drive to zero.
+double max_target_deviation(const Cluster& c, const std::vector<double>& volumes);
 
 /// The gradients of the body volumes with respect to the vertex positions: column b holds
 /// d V_b / d X_v in rows 3v..3v+2 (3 n_vertices x n_bodies). Away from lids this is

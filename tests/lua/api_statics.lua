@@ -152,6 +152,9 @@ T.check_error("unknown option 'tolerance'", b.minimize, b, {tolerance = 1})
 T.check_error("minimize: expected an option table", b.minimize, b, "fast")
 T.check_error("max_iterations", b.minimize, b, {max_iterations = 0})
 T.check_error("body 3", b.set_volume, b, 3, 1)
+local film = froth.cluster{vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                           surfaces = {{{1, 3, 2}, {1, 2, 4}, {2, 3, 4}, {3, 1, 4}}}}
+T.check_error("set_volume: the cluster has no bodies", film.set_volume, film, 1, 1)
 T.check_error("must be positive and finite, got -1", b.set_volume, b, 1, -1)
 T.check_error("must be positive and finite, got nan", b.set_volume, b, 1, 0 / 0)
 T.check_error("expected a volume", b.set_volume, b, 1, "big")
