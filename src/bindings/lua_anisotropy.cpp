@@ -245,12 +245,12 @@ void push_anisotropy(lua_State* L, std::shared_ptr<const Anisotropy> gamma) {
 }
 
 std::shared_ptr<const Anisotropy> check_anisotropy(lua_State* L, int idx, const char* who) {
-    auto* box = static_cast<Box<AnisotropyHandle>*>(luaL_testudata(L, idx, kAnisotropyType));
-    if (!box)
+    auto* ptr = test_ptr<AnisotropyHandle>(L, idx, kAnisotropyType);
+    if (!ptr)
         luaL_error(L, "%s: expected a froth.Anisotropy (from froth.anisotropy or "
                       "froth.anisotropies), got %s",
                    who, luaL_typename(L, idx));
-    return box->ptr;
+    return *ptr;
 }
 
 } // namespace froth::lua

@@ -15,9 +15,25 @@
 #include <unistd.h>
 
 namespace froth::lua {
+
+ClusterHandle& check_cluster(lua_State* L, int idx) {
+    return check<ClusterHandle>(L, idx, kClusterType);
+}
+
+ChangeGuard::ChangeGuard(lua_State* L, ClusterHandle& h, const char* op) : h_(h) {
+    if (h.changing)
+        luaL_error(L, "%s: the cluster is busy: c:%s is running, and its callbacks (on_step, "
+                      "mobility and wall functions) may read the cluster but not change it",
+                   op, h.changing);
+    if (h.querying > 0)
+        luaL_error(L, "%s: the cluster is busy: a query is running a wall function, which may "
+                      "read the cluster but not change it", op);
+    h.changing = op;
+}
+
 namespace {
 
-ClusterHandle& self(lua_State* L) { return check<ClusterHandle>(L, 1, kClusterType); }
+ClusterHandle& self(lua_State* L) { return check_cluster(L, 1); }
 
 int check_surface(lua_State* L, int idx, const Cluster& c) {
     return check_id(L, idx, c.n_surfaces(), "surface", "surfaces");
@@ -55,7 +71,9 @@ int l_area(lua_State* L) {
 }
 
 int l_volumes(lua_State* L) {
-    const Cluster& c = self(L).cluster;
+    ClusterHandle& h = self(L);
+    const Cluster& c = h.cluster;
+    QueryGuard query(h);
     return guarded(L, [&] { // lids evaluate the walls, and a user's wall function may fail
         push_numbers(L, body_volumes(c));
         return 1;
@@ -69,7 +87,9 @@ int l_sigma(lua_State* L) {
 }
 
 int l_set_sigma(lua_State* L) {
-    Cluster& c = self(L).cluster;
+    ClusterHandle& h = self(L);
+    Cluster& c = h.cluster;
+    ChangeGuard change(L, h, "set_sigma");
     const int s = check_surface(L, 2, c);
     const double value = luaL_checknumber(L, 3);
     return guarded(L, [&] {
@@ -92,7 +112,9 @@ std::vector<int> check_surfaces(lua_State* L, int idx, const Cluster& c, const c
 
 /// c:set_anisotropy(surface or "all", gamma or nil): nil restores the isotropic sigma |nu|.
 int l_set_anisotropy(lua_State* L) {
-    Cluster& c = self(L).cluster;
+    ClusterHandle& h = self(L);
+    Cluster& c = h.cluster;
+    ChangeGuard change(L, h, "set_anisotropy");
     const std::vector<int> ids = check_surfaces(L, 2, c, "set_anisotropy");
     std::shared_ptr<const Anisotropy> gamma;
     if (!lua_isnoneornil(L, 3)) gamma = check_anisotropy(L, 3, "set_anisotropy");
@@ -134,7 +156,9 @@ Mobility read_mobility(lua_State* L, int idx) {
 
 /// c:set_mobility(surface or "all", beta).
 int l_set_mobility(lua_State* L) {
-    Cluster& c = self(L).cluster;
+    ClusterHandle& h = self(L);
+    Cluster& c = h.cluster;
+    ChangeGuard change(L, h, "set_mobility");
     const std::vector<int> ids = check_surfaces(L, 2, c, "set_mobility");
     const Mobility beta = read_mobility(L, 3);
     for (int i : ids) c.set_mobility(i, beta);
@@ -231,7 +255,9 @@ int l_walls(lua_State* L) {
 }
 
 int l_report(lua_State* L) {
-    const Cluster& c = self(L).cluster;
+    ClusterHandle& h = self(L);
+    const Cluster& c = h.cluster;
+    QueryGuard query(h);
     return guarded(L, [&] {
         push_report(L, make_report(c));
         return 1;
@@ -258,6 +284,7 @@ FixedPointOptions read_fixed_point(lua_State* L, Options& o, const char* what) {
 
 int l_step(lua_State* L) {
     ClusterHandle& h = self(L);
+    ChangeGuard change(L, h, "step");
     Options o(L, 2, "step");
     const std::string flow = o.string("flow");
     const double tau = o.number("tau");
@@ -327,6 +354,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
 
 int l_evolve(lua_State* L) {
     ClusterHandle& h = self(L);
+    ChangeGuard change(L, h, "evolve");
     Options o(L, 2, "evolve");
     EvolveOptions e;
     guarded(L, [&] { // parse_flow throws InvalidInput: it must become a Lua error
@@ -378,8 +406,8 @@ int l_write(lua_State* L) {
 }
 
 int l_clone(lua_State* L) {
-    const Cluster& c = self(L).cluster;
-    push<ClusterHandle>(L, std::make_shared<ClusterHandle>(c), kClusterType);
+    const ClusterHandle& h = self(L);
+    push<ClusterHandle>(L, std::make_shared<ClusterHandle>(h), kClusterType);
     return 1;
 }
 
@@ -393,7 +421,15 @@ int l_tostring(lua_State* L) {
     return 1;
 }
 
-int l_gc(lua_State* L) { return collect<ClusterHandle>(L, kClusterType); }
+int l_gc(lua_State* L) {
+    // Lua collects a cluster only when nothing refers to it, so a running call (which holds
+    // it as argument 1) can meet its own __gc only through debug.getmetatable.
+    auto* box = static_cast<Box<ClusterHandle>*>(luaL_checkudata(L, 1, kClusterType));
+    if (box->ptr && (box->ptr->changing || box->ptr->querying > 0))
+        return luaL_error(L, "%s: cannot destroy a cluster while a call on it is running",
+                          kClusterType);
+    return collect<ClusterHandle>(L, kClusterType);
+}
 
 const luaL_Reg methods[] = {
     {"info", l_info},         {"energy", l_energy},

@@ -11,11 +11,12 @@
 namespace froth::lua {
 namespace {
 
-ClusterHandle& self(lua_State* L) { return check<ClusterHandle>(L, 1, kClusterType); }
+ClusterHandle& self(lua_State* L) { return check_cluster(L, 1); }
 
 /// c:minimize{tol, max_iterations, tau_start, tau_growth, tau_max, volume_tol}
 int l_minimize(lua_State* L) {
     ClusterHandle& h = self(L);
+    ChangeGuard change(L, h, "minimize");
     Options o(L, 2, "minimize", true);
     MinimizeOptions m;
     m.tol = o.number("tol", m.tol);
@@ -48,7 +49,9 @@ int l_minimize(lua_State* L) {
 
 /// c:pressures() -> {p_1, ..., p_n}, residual
 int l_pressures(lua_State* L) {
-    const Cluster& c = self(L).cluster;
+    ClusterHandle& h = self(L);
+    const Cluster& c = h.cluster;
+    QueryGuard query(h);
     return guarded(L, [&] {
         const EquilibriumState s = equilibrium_state(c);
         push_numbers(L, s.pressures);
@@ -59,7 +62,9 @@ int l_pressures(lua_State* L) {
 
 /// c:set_volume(body, v)
 int l_set_volume(lua_State* L) {
-    Cluster& c = self(L).cluster;
+    ClusterHandle& h = self(L);
+    Cluster& c = h.cluster;
+    ChangeGuard change(L, h, "set_volume");
     if (c.n_bodies() == 0) return luaL_error(L, "set_volume: the cluster has no bodies");
     const int b = check_id(L, 2, c.n_bodies(), "body", "bodies");
     if (lua_type(L, 3) != LUA_TNUMBER)
@@ -80,6 +85,7 @@ int l_target_volumes(lua_State* L) {
 /// c:refine() -> {vertices, facets, volume_change}
 int l_refine(lua_State* L) {
     ClusterHandle& h = self(L);
+    ChangeGuard changing(L, h, "refine");
     return guarded(L, [&] {
         const std::vector<double> before = body_volumes(h.cluster);
         Cluster refined = refine(h.cluster); // throws before anything changes

@@ -16,7 +16,7 @@ namespace {
 using WallHandle = const Wall;
 
 WallPtr& self_ptr(lua_State* L, int idx = 1) {
-    return static_cast<Box<WallHandle>*>(luaL_checkudata(L, idx, kWallType))->ptr;
+    return check_ptr<WallHandle>(L, idx, kWallType);
 }
 
 /// Reads {x, y, z} (a table) or three numbers starting at idx.
@@ -185,8 +185,8 @@ std::vector<WallPtr> read_walls(lua_State* L, int idx, const char* who) {
     std::vector<WallPtr> walls;
     idx = lua_absindex(L, idx);
     if (lua_isnil(L, idx)) return walls;
-    if (luaL_testudata(L, idx, kWallType)) {
-        walls.push_back(self_ptr(L, idx));
+    if (WallPtr* w = test_ptr<WallHandle>(L, idx, kWallType)) {
+        walls.push_back(*w);
         return walls;
     }
     if (!lua_istable(L, idx))
@@ -194,10 +194,11 @@ std::vector<WallPtr> read_walls(lua_State* L, int idx, const char* who) {
                    luaL_typename(L, idx));
     for (int k = 1; k <= luaL_len(L, idx); ++k) {
         lua_rawgeti(L, idx, k);
-        if (!luaL_testudata(L, -1, kWallType))
+        WallPtr* w = test_ptr<WallHandle>(L, -1, kWallType);
+        if (!w)
             luaL_error(L, "%s[%d] must be a wall (froth.plane{...}, ...), got %s", who, k,
                        luaL_typename(L, -1));
-        walls.push_back(self_ptr(L, lua_gettop(L)));
+        walls.push_back(*w);
         lua_pop(L, 1);
     }
     return walls;

@@ -147,6 +147,8 @@ void register_type(lua_State* L, const char* type_name, const luaL_Reg* methods,
     lua_setfield(L, -2, "__gc");
     lua_pushcfunction(L, tostring);
     lua_setfield(L, -2, "__tostring");
+    lua_pushstring(L, type_name);
+    lua_setfield(L, -2, "__metatable");
     lua_pop(L, 1);
 }
 

@@ -22,9 +22,25 @@ template <class T> struct Box {
     std::shared_ptr<T> ptr;
 };
 
-template <class T> T& check(lua_State* L, int idx, const char* type_name) {
+/// The owner in argument idx. A destroyed box (its __gc has run: Lua calls it once when the
+/// object is collected, but debug.getmetatable can reach it earlier) raises a Lua error
+/// instead of touching freed memory.
+template <class T> std::shared_ptr<T>& check_ptr(lua_State* L, int idx, const char* type_name) {
     auto* box = static_cast<Box<T>*>(luaL_checkudata(L, idx, type_name));
-    return *box->ptr;
+    if (!box->ptr) luaL_error(L, "%s: the object has been destroyed (its __gc ran)", type_name);
+    return box->ptr;
+}
+
+template <class T> T& check(lua_State* L, int idx, const char* type_name) {
+    return *check_ptr<T>(L, idx, type_name);
+}
+
+/// As check_ptr, but nullptr (no error) if argument idx is not a type_name at all.
+template <class T> std::shared_ptr<T>* test_ptr(lua_State* L, int idx, const char* type_name) {
+    auto* box = static_cast<Box<T>*>(luaL_testudata(L, idx, type_name));
+    if (!box) return nullptr;
+    if (!box->ptr) luaL_error(L, "%s: the object has been destroyed (its __gc ran)", type_name);
+    return &box->ptr;
 }
 
 template <class T> void push(lua_State* L, std::shared_ptr<T> obj, const char* type_name) {
@@ -34,8 +50,10 @@ template <class T> void push(lua_State* L, std::shared_ptr<T> obj, const char* t
     box->ptr = std::move(obj);
 }
 
+/// __gc: releases the owner and marks the box destroyed, so a second call is harmless. The
+/// Box itself is left to Lua's allocator: an empty shared_ptr owns nothing.
 template <class T> int collect(lua_State* L, const char* type_name) {
-    static_cast<Box<T>*>(luaL_checkudata(L, 1, type_name))->~Box<T>();
+    static_cast<Box<T>*>(luaL_checkudata(L, 1, type_name))->ptr.reset();
     return 0;
 }
 
@@ -117,7 +135,8 @@ class LuaFunction {
     std::string owner_, what_;
 };
 
-/// Creates the metatable `type_name` once per state: __index = the methods, __gc, __tostring.
+/// Creates the metatable `type_name` once per state: __index = the methods, __gc, __tostring,
+/// and __metatable = type_name, so getmetatable() shows the type but cannot reach __gc.
 void register_type(lua_State* L, const char* type_name, const luaL_Reg* methods,
                    lua_CFunction gc, lua_CFunction tostring);
 

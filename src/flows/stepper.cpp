@@ -61,6 +61,17 @@ struct TimeStepper::System {
 TimeStepper::TimeStepper() = default;
 TimeStepper::~TimeStepper() = default;
 
+namespace {
+template <class T> std::unique_ptr<T> copy_of(const std::unique_ptr<T>& p) {
+    return p ? std::make_unique<T>(*p) : nullptr;
+}
+} // namespace
+
+TimeStepper::TimeStepper(const TimeStepper& o)
+    : fixed_point_(o.fixed_point_), exact_volumes_(o.exact_volumes_), last_z_(o.last_z_),
+      last_tau_(o.last_tau_), last_end_(o.last_end_), revision_(o.revision_),
+      mcf_(copy_of(o.mcf_)), sd_(copy_of(o.sd_)), Z_(copy_of(o.Z_)) {}
+
 void TimeStepper::reset() {
     revision_ = -1;
     mcf_.reset(), sd_.reset(), Z_.reset();

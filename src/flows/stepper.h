@@ -75,6 +75,10 @@ class TimeStepper {
   public:
     TimeStepper();
     ~TimeStepper();
+    /// A copy carries everything the next step depends on (options, patterns, the last
+    /// factorisations, the warm start), so it steps bit for bit as the original would.
+    TimeStepper(const TimeStepper& other);
+    TimeStepper& operator=(const TimeStepper&) = delete;
     /// Takes one step of length tau; with project_onto_walls, wall-attached vertices are then
     /// projected back onto their walls (off by default: it voids the stability bound).
     /// On any throw the cluster is unchanged.

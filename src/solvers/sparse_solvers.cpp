@@ -61,26 +61,37 @@ struct SparseDirectSolver::Impl {
     UmfPackLU lu;
 };
 
-SparseDirectSolver::SparseDirectSolver(Factorization kind, bool reuse)
-    : impl_(std::make_unique<Impl>()), kind_(kind), reuse_(reuse) {
-    tune_for_factorisations();
-    impl_->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
+std::shared_ptr<SparseDirectSolver::Impl> SparseDirectSolver::configured_impl() {
+    auto impl = std::make_shared<Impl>();
+    impl->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
     // Our saddle points have a symmetric pattern: AMD/METIS on A + A' with diagonal pivots
     // preferred; METIS nested dissection beats AMD by about 1.5x on surface meshes. UMFPACK's
     // own iterative refinement is off: GMRES below does that job (and more) for less.
-    auto& control = impl_->lu.umfpackControl();
+    auto& control = impl->lu.umfpackControl();
     control(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
     control(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
     control(UMFPACK_IRSTEP) = 0;
+    return impl;
+}
+
+SparseDirectSolver::SparseDirectSolver(Factorization kind, bool reuse)
+    : impl_(configured_impl()), kind_(kind), reuse_(reuse) {
+    tune_for_factorisations();
 }
 
 SparseDirectSolver::~SparseDirectSolver() = default;
+SparseDirectSolver::SparseDirectSolver(const SparseDirectSolver&) = default;
+SparseDirectSolver& SparseDirectSolver::operator=(const SparseDirectSolver&) = default;
 
 void SparseDirectSolver::factorize(const SparseMatrix& A) {
     const std::string who = kind_ == Factorization::Cholesky ? "cholesky" : "lu";
     for (int k = 0; k < A.nonZeros(); ++k)
         if (!std::isfinite(A.valuePtr()[k]))
             throw SolverError(who + ": the system matrix has non-finite entries");
+    if (impl_.use_count() > 1) { // shared with a copy: factorise into a fresh one (same analysis)
+        impl_ = configured_impl();
+        analyzed_ = false;
+    }
     factorized_ = false;
     bool ok;
     if (kind_ == Factorization::Cholesky) {

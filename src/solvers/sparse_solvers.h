@@ -35,6 +35,11 @@ class SparseDirectSolver {
     /// reuse = false refactorises for every solve (the plain direct method, for comparisons).
     explicit SparseDirectSolver(Factorization kind, bool reuse = true);
     ~SparseDirectSolver();
+    /// A copy shares the last factorisation (read-only, copy on write: whichever copy
+    /// refactorises first gets a factor of its own), so a copied solver continues exactly as
+    /// the original would: c:clone() is an exact replay.
+    SparseDirectSolver(const SparseDirectSolver&);
+    SparseDirectSolver& operator=(const SparseDirectSolver&);
     /// Solves A x = b; the pattern of A must not change between calls, and A is stored in full
     /// (Cholesky reads its lower half).
     /// \throw SolverError if A is not finite, singular, (Cholesky) not positive definite, or
@@ -53,7 +58,8 @@ class SparseDirectSolver {
     void factorize(const SparseMatrix& A);
     Eigen::VectorXd apply_factor(const Eigen::VectorXd& b) const;
     struct Impl;
-    std::unique_ptr<Impl> impl_;
+    static std::shared_ptr<Impl> configured_impl();
+    std::shared_ptr<Impl> impl_;
     Factorization kind_;
     bool reuse_;
     bool analyzed_ = false, factorized_ = false;
