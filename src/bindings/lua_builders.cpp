@@ -1,11 +1,12 @@
-// Cluster constructors: froth.cluster{...} from plain Lua tables, and (with gmsh) the meshed
-// builders froth.double_bubble, froth.sphere, froth.read and froth.fragment, plus the named
+// Cluster constructors: froth.cluster{...} from plain Lua tables, froth.read of MSH files, and
+// (with gmsh) the meshed builders froth.double_bubble, froth.sphere and froth.fragment, plus the named
 // clusters of lua/froth/clusters.lua (froth.torus_bubble, ...) built on froth.fragment.
 #include "bindings/lua_builders.h"
 
 #include "bindings/lua_cluster.h"
 #include "bindings/lua_walls.h"
 #include "core/errors.h"
+#include "io/msh_reader.h"
 #include "bindings/luax.h"
 
 #ifdef FROTH_HAVE_GMSH
@@ -138,6 +139,22 @@ int l_cluster(lua_State* L) {
     });
 }
 
+/// froth.read(path[, {walls}]): an MSH file (io/msh_reader.h; no gmsh needed).
+int l_read(lua_State* L) {
+    const std::string path = luaL_checkstring(L, 1);
+    Options o(L, 2, "read", true);
+    o.push("walls");
+    std::vector<WallPtr> walls = read_walls(L, -1, "read: walls");
+    lua_pop(L, 1);
+    o.finish();
+    return guarded(L, [&] {
+        ClusterSpec spec = read_msh(path);
+        spec.walls = std::move(walls);
+        push_cluster(L, std::move(spec));
+        return 1;
+    });
+}
+
 #ifdef FROTH_HAVE_GMSH
 std::array<double, 3> read_sigmas(lua_State* L, Options& o, const char* op) {
     std::array<double, 3> sigma{1, 1, 1};
@@ -192,21 +209,6 @@ int l_sphere(lua_State* L) {
     o.finish();
     return guarded(L, [&] {
         push_cluster(L, gmsh_builders().sphere(s));
-        return 1;
-    });
-}
-
-int l_read(lua_State* L) {
-    const std::string path = luaL_checkstring(L, 1);
-    Options o(L, 2, "read", true);
-    o.push("walls");
-    std::vector<WallPtr> walls = read_walls(L, -1, "read: walls");
-    lua_pop(L, 1);
-    o.finish();
-    return guarded(L, [&] {
-        ClusterSpec spec = gmsh_builders().read_msh(path);
-        spec.walls = std::move(walls);
-        push_cluster(L, std::move(spec));
         return 1;
     });
 }
@@ -484,10 +486,10 @@ int l_has(lua_State* L) {
 
 const luaL_Reg functions[] = {
     {"cluster", l_cluster},
+    {"read", l_read},
 #ifdef FROTH_HAVE_GMSH
     {"double_bubble", l_double_bubble},
     {"sphere", l_sphere},
-    {"read", l_read},
     {"fragment", l_fragment},
 #endif
     {"has", l_has},

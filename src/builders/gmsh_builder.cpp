@@ -1,4 +1,4 @@
-// The double bubble, the sphere and read_msh (the session and extraction: gmsh_session.cpp).
+// The double bubble and the sphere (the session and extraction: gmsh_session.cpp).
 #include "builders/gmsh_builder.h"
 
 #include "builders/gmsh_session.h"
@@ -96,85 +96,6 @@ ClusterSpec build_sphere(const SphereOptions& o) {
         for (Vec3& x : spec.vertices)
             x = o.center + o.R * x;
         return spec;
-    });
-}
-
-namespace {
-
-// Physical groups of dimension dim in order of tag, each as its entity tags; if there are
-// none, each entity of that dimension alone.
-std::vector<std::vector<int>> groups_or_entities(int dim, bool& physical) {
-    gmsh::vectorpair groups;
-    gmsh::model::getPhysicalGroups(groups, dim);
-    std::sort(groups.begin(), groups.end());
-    std::vector<std::vector<int>> r;
-    for (auto [d, tag] : groups) {
-        std::vector<int> entities;
-        gmsh::model::getEntitiesForPhysicalGroup(d, tag, entities);
-        r.push_back(entities);
-    }
-    physical = !groups.empty();
-    if (!physical)
-        for (int e : entity_tags(dim))
-            r.push_back({e});
-    return r;
-}
-
-std::vector<FilmPlan> msh_films(const std::string& where) {
-    bool physical = false;
-    std::vector<FilmPlan> films;
-    for (const std::vector<int>& group : groups_or_entities(2, physical)) {
-        std::size_t n = 0;
-        for (int e : group)
-            n += entity_triangles(e).size();
-        if (n == 0 && physical)
-            throw IoError(where + "physical surface " + std::to_string(films.size() + 1) +
-                          " has no triangles");
-        if (n > 0) films.push_back({group, 1.0});
-    }
-    return films;
-}
-
-std::vector<std::vector<int>> msh_bodies(const std::vector<FilmPlan>& films,
-                                         const std::string& where) {
-    std::unordered_map<int, int> film_of; // surface entity -> froth surface
-    for (std::size_t f = 0; f < films.size(); ++f)
-        for (int e : films[f].entities)
-            film_of.emplace(e, static_cast<int>(f));
-    bool physical = false;
-    std::vector<std::vector<int>> bodies;
-    for (const std::vector<int>& volumes : groups_or_entities(3, physical)) {
-        std::vector<int> body;
-        for (int v : volumes)
-            for (int s : adjacent(3, v, false))
-                if (auto it = film_of.find(s); it != film_of.end()) body.push_back(it->second);
-        std::sort(body.begin(), body.end());
-        body.erase(std::unique(body.begin(), body.end()), body.end());
-        if (body.empty() && physical) // a named body we cannot build: say so rather than drop it
-            throw IoError(where + "physical volume " + std::to_string(bodies.size() + 1) +
-                          " has no triangulated boundary surfaces");
-        if (!body.empty()) bodies.push_back(std::move(body));
-    }
-    return bodies;
-}
-
-} // namespace
-
-ClusterSpec read_msh(const std::string& path) {
-    // gmsh::open on a missing file only logs and returns, so check first.
-    if (std::FILE* f = std::fopen(path.c_str(), "rb"))
-        std::fclose(f);
-    else
-        throw IoError("read: cannot open '" + path + "': " + std::strerror(errno));
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw IoError("read: cannot open '" + path + "': Is a directory");
-    const std::string where = "read: '" + path + "': ";
-    return in_session<IoError>("read: '" + path + "' is not a readable mesh: ", [&] {
-        gmsh::open(path);
-        std::vector<FilmPlan> films = msh_films(where);
-        if (films.empty()) throw IoError("read: '" + path + "' has no triangles");
-        return extract(films, msh_bodies(films, where), "read: '" + path + "'");
     });
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-/// Cluster specs from gmsh (docs: ../shared/docs/dependencies.md §3): the OCC double bubble,
-/// a single sphere, and any MSH file. gmsh itself stays private to the .cpp, so including this
-/// header needs no gmsh. gmsh is a process-wide singleton: the builders serialise on a mutex.
+/// Cluster specs from gmsh (docs: ../shared/docs/dependencies.md §3): the OCC double bubble
+/// and a single sphere (MSH files are read without gmsh: io/msh_reader.h). gmsh itself stays
+/// private to the .cpp, so including this header needs no gmsh. gmsh is a process-wide singleton: the builders serialise on a mutex.
 
 #include "mesh/cluster.h"
 
@@ -31,14 +31,5 @@ struct SphereOptions {
 /// One spherical surface (sigma 1) enclosing one body.
 /// \throw InvalidInput for bad options, GeometryError if gmsh fails.
 ClusterSpec build_sphere(const SphereOptions& options);
-
-/// Reads any mesh file gmsh can open (MSH 2/4 ...). Only 3-node triangles are used.
-/// Surfaces: the physical surfaces in order of physical tag (all their entities merged into one
-/// consistently oriented surface), or, if there are none, each surface entity with triangles in
-/// order of entity tag. Bodies: the physical volumes in order of tag (or, if none, each volume
-/// entity); a body's surfaces are those holding an entity on the boundary of its volumes.
-/// Sigma is 1 everywhere. \throw IoError if the file is missing, malformed or has no
-/// triangles; TopologyError if a merged surface cannot be oriented consistently.
-ClusterSpec read_msh(const std::string& path);
 
 } // namespace froth

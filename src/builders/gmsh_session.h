@@ -4,6 +4,7 @@
 
 #include "core/errors.h"
 #include "mesh/cluster.h"
+#include "mesh/orient_parts.h"
 
 #include <gmsh.h>
 
@@ -16,7 +17,6 @@
 
 namespace froth::gmsh_detail {
 
-using NodeTri = std::array<std::size_t, 3>; // a triangle as gmsh node tags
 
 /// One froth surface to be: the gmsh surface entities merged into it.
 struct FilmPlan {
@@ -63,10 +63,6 @@ template <class E, class F> auto in_session(const std::string& prefix, F&& body)
 
 /// The 3-node triangles of surface entity tag.
 std::vector<NodeTri> entity_triangles(int tag);
-
-/// Flips whole parts so that triangles of different parts sharing an edge traverse it in
-/// opposite directions. \throw TopologyError (naming `what`) if that is impossible.
-void orient_parts(std::vector<std::vector<NodeTri>>& parts, const std::string& what);
 
 /// The ClusterSpec of the current gmsh model: one surface per film (its entities merged and
 /// oriented consistently), vertices compacted to the nodes the triangles use, numbered 0.. in

@@ -4,7 +4,7 @@
 namespace froth {
 
 const GmshBuilders& gmsh_builders_table() {
-    static const GmshBuilders table{&build_double_bubble, &build_sphere, &read_msh, &build_fragment};
+    static const GmshBuilders table{&build_double_bubble, &build_sphere, &build_fragment};
     return table;
 }
 

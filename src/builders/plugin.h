@@ -13,7 +13,6 @@ namespace froth {
 struct GmshBuilders {
     ClusterSpec (*double_bubble)(const DoubleBubbleOptions&);
     ClusterSpec (*sphere)(const SphereOptions&);
-    ClusterSpec (*read_msh)(const std::string&);
     ClusterSpec (*fragment)(const FragmentOptions&);
 };
 

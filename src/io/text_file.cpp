@@ -2,12 +2,17 @@
 
 #include "core/errors.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace froth::io {
 namespace fs = std::filesystem;
@@ -80,6 +85,39 @@ void write_text_file(const std::string& path, const std::string& text, const cha
         std::remove(tmp.c_str());
         throw IoError(std::string(op) + ": cannot write '" + path + "': " + ec.message());
     }
+}
+
+std::string read_text_file(const std::string& path, std::uintmax_t max_bytes, const char* op) {
+    const std::string prefix = std::string(op) + ": cannot open '" + path + "': ";
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) throw IoError(prefix + std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) throw IoError(prefix + std::strerror(EISDIR));
+    if (!S_ISREG(st.st_mode)) throw IoError(prefix + "not a regular file");
+    if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
+        throw IoError(prefix + "larger than the limit of " + std::to_string(max_bytes) + " bytes");
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw IoError(prefix + std::strerror(errno));
+    struct stat again {};
+    if (::fstat(fd, &again) != 0 || !S_ISREG(again.st_mode)) { // replaced since the stat
+        ::close(fd);
+        throw IoError(prefix + "not a regular file");
+    }
+    std::string text(static_cast<std::size_t>(std::min<std::uintmax_t>(again.st_size, max_bytes)), '\0');
+    std::size_t got = 0;
+    while (got < text.size()) { // a file that shrinks meanwhile ends early; one that grows is cut
+        const ssize_t r = ::read(fd, text.data() + got, text.size() - got);
+        if (r < 0 && errno == EINTR) continue;
+        if (r < 0) {
+            const int err = errno;
+            ::close(fd);
+            throw IoError(std::string(op) + ": cannot read '" + path + "': " + std::strerror(err));
+        }
+        if (r == 0) break;
+        got += static_cast<std::size_t>(r);
+    }
+    ::close(fd);
+    text.resize(got);
+    return text;
 }
 
 } // namespace froth::io

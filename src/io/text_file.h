@@ -2,6 +2,7 @@
 /// Shared helpers of the froth_io writers: a fast text buffer (shortest round-trip number
 /// formatting via std::to_chars) and an atomic whole-file write that reports IoError.
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -42,5 +43,12 @@ void ensure_parent_directory(const std::string& path, const char* op = "write");
 /// never sees a half-written file.
 /// \throw IoError "<op>: cannot open 'path' for writing: <strerror>" (or "cannot write")
 void write_text_file(const std::string& path, const std::string& text, const char* op = "write");
+
+/// The whole contents of path, a regular file of at most max_bytes bytes (devices, pipes and
+/// directories are refused before they are opened for reading, so nothing can block or stream
+/// forever).
+/// \throw IoError "<op>: cannot open 'path': <reason>" ("No such file or directory", "Is a
+///        directory", "not a regular file", "larger than the limit of N bytes", ...)
+std::string read_text_file(const std::string& path, std::uintmax_t max_bytes, const char* op);
 
 } // namespace froth::io

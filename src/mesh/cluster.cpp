@@ -79,6 +79,11 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
     for (int v = 0; v < n; ++v)
         if (!spec.vertices[v].allFinite())
             throw InvalidInput("cluster: " + vertex_name(v) + " has a non-finite coordinate");
+        else if (spec.vertices[v].cwiseAbs().maxCoeff() > kMaxCoordinate)
+            throw InvalidInput("cluster: " + vertex_name(v) + " has the coordinate " +
+                               fmt(spec.vertices[v].cwiseAbs().maxCoeff()) +
+                               "; coordinates must be at most 1e100 in magnitude (areas and "
+                               "volumes of larger ones overflow)");
     for (std::size_t i = 0; i < spec.surfaces.size(); ++i) {
         const auto& s = spec.surfaces[i];
         const std::string name = surface_name(static_cast<int>(i));

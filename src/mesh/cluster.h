@@ -20,6 +20,10 @@ namespace froth {
 using Vec3 = Eigen::Vector3d;
 using Tri = std::array<int, 3>;
 
+/// The largest coordinate magnitude a cluster accepts: a volume is a sum of products of three
+/// coordinates, and 1e100 cubed is still finite.
+inline constexpr double kMaxCoordinate = 1e100;
+
 /// What a builder or a user hands to the engine. All ids are 0-based.
 struct ClusterSpec {
     struct Surface {

@@ -4,6 +4,7 @@
 #include "builders/fragment.h"
 #include "builders/gmsh_builder.h"
 #include "core/errors.h"
+#include "io/msh_reader.h"
 #include "io/msh_writer.h"
 #include "mesh/cluster.h"
 
