@@ -64,27 +64,62 @@ namespace {
 
 } // namespace
 
+namespace {
+
+/// write(2) all of text to fd; false (errno set) on failure.
+bool write_all(int fd, const std::string& text) {
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+        if (w < 0 && errno == EINTR) continue;
+        if (w <= 0) {
+            if (w == 0) errno = EIO;
+            return false;
+        }
+        done += static_cast<std::size_t>(w);
+    }
+    return true;
+}
+
+void fsync_directory(const fs::path& dir) {
+    const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return; // the rename has happened; durability of the entry is best effort
+    ::fsync(fd);
+    ::close(fd);
+}
+
+} // namespace
+
+// A unique temporary beside the target (mkstemp: no clobbering of a user's file, no two
+// writers sharing one), flushed to disk (fsync) before the rename, so a crash or power loss
+// leaves the old file or the new one, never a truncated mix; then the folder's entry is synced.
 void write_text_file(const std::string& path, const std::string& text, const char* op) {
     if (path.empty()) throw IoError(std::string(op) + ": empty file name");
     ensure_parent_directory(path, op);
-    const std::string tmp = path + ".tmp";
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) fail(op, "cannot open '" + path + "' for writing", errno);
-    errno = 0;
-    const bool wrote = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    const fs::path target(path);
+    std::string name = ".";
+    name += target.filename().string();
+    name += ".XXXXXX";
+    std::string tmp = (target.parent_path() / name).string();
+    const int fd = ::mkstemp(tmp.data());
+    if (fd < 0) fail(op, "cannot open '" + path + "' for writing", errno);
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask); // mkstemp makes 0600; a written file gets the usual mode
+    const bool wrote = write_all(fd, text) && ::fsync(fd) == 0;
     int err = errno;
-    const bool closed = std::fclose(f) == 0;
-    if (!closed && err == 0) err = errno;
+    const bool closed = ::close(fd) == 0;
+    if (!closed && wrote) err = errno;
     if (!wrote || !closed) {
-        std::remove(tmp.c_str());
+        ::unlink(tmp.c_str());
         fail(op, "cannot write '" + path + "'", err ? err : EIO);
     }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        throw IoError(std::string(op) + ": cannot write '" + path + "': " + ec.message());
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        err = errno;
+        ::unlink(tmp.c_str());
+        fail(op, "cannot write '" + path + "'", err);
     }
+    fsync_directory(target.parent_path());
 }
 
 std::string read_text_file(const std::string& path, std::uintmax_t max_bytes, const char* op) {

@@ -38,9 +38,11 @@ class TextBuffer {
 /// \throw IoError "<op>: cannot create directory 'dir': <reason>"
 void ensure_parent_directory(const std::string& path, const char* op = "write");
 
-/// Writes text to path, creating the parent directory if needed. The text goes to a temporary
-/// file beside path that is then renamed over it, so a reader (ParaView watching a series)
-/// never sees a half-written file.
+/// Writes text to path, creating the parent directory if needed. The text goes to a unique
+/// temporary file beside path (mkstemp: ".name.XXXXXX"), is fsynced, and is renamed over path,
+/// and the folder is fsynced: a reader (ParaView watching a series) never sees a half-written
+/// file, a crash leaves the old file or the new one, and concurrent writers never share a
+/// temporary.
 /// \throw IoError "<op>: cannot open 'path' for writing: <strerror>" (or "cannot write")
 void write_text_file(const std::string& path, const std::string& text, const char* op = "write");
 

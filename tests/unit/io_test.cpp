@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -154,7 +156,28 @@ TEST_F(IoTest, VtuHasCountsSurfaceIdsPointsAndFields) {
     const std::vector<double> pts = numbers(data_array(xml, "Points"));
     ASSERT_EQ(pts.size(), 24u);
     for (int k = 0; k < 24; ++k) EXPECT_EQ(pts[k], c.position(k / 3)[k % 3]);
-    EXPECT_FALSE(fs::exists(path("sub/dir/c.vtu.tmp")));
+    for (const auto& entry : fs::directory_iterator(path("sub/dir"))) // no temporary left over
+        EXPECT_EQ(entry.path().filename(), "c.vtu");
+}
+
+// The temporary is unique (mkstemp), so a user's own "x.off.tmp" survives, a failed write
+// leaves nothing, and a written file has the umask's mode, not mkstemp's 0600.
+TEST_F(IoTest, WritesUseAUniqueTemporaryAndLeaveNothingBehind) {
+    const Cluster c = two_tetrahedra();
+    fs::create_directories(dir_);
+    std::ofstream(path("x.off.tmp")) << "mine";
+    write_off(c, path("x.off"));
+    write_off(c, path("x.off")); // over an existing file
+    EXPECT_EQ(slurp(path("x.off.tmp")), "mine");
+    fs::create_directories(path("d.ply"));
+    EXPECT_THROW(write_ply(c, path("d.ply")), IoError); // the rename fails: a directory is there
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"d.ply", "x.off", "x.off.tmp"}));
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    EXPECT_EQ(static_cast<mode_t>(fs::status(path("x.off")).permissions()), 0666 & ~mask);
 }
 
 TEST_F(IoTest, WrongFieldLengthThrowsNamingTheField) {
