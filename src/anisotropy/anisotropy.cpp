@@ -30,6 +30,15 @@ void validate_G(const Matrix3d& G, std::size_t l) {
     if (!(lmin > 0.0))
         throw InvalidInput(term_name(l) + ": G is not positive definite (smallest eigenvalue " +
                            fmt(lmin) + ")");
+    // gamma_l(p)^2 = p.G p must not overflow for any normal a cluster can have (|p| up to the
+    // area of a facet with coordinates of 1e100 is excluded elsewhere; here the scale of G).
+    if (!(scale >= 1e-100 && scale <= 1e100))
+        throw InvalidInput(term_name(l) + ": G's entries must be between 1e-100 and 1e100 in "
+                           "magnitude (the largest is " + fmt(scale) + "); scale sigma instead");
+    const double lmax = eig.eigenvalues().maxCoeff();
+    if (lmin < 1e-14 * lmax)
+        throw InvalidInput(term_name(l) + ": G is too close to singular (eigenvalues " +
+                           fmt(lmin) + " .. " + fmt(lmax) + ")");
 }
 
 void validate_r(double r) {
@@ -84,8 +93,11 @@ Anisotropy::Anisotropy(std::vector<Matrix3d> G, double r) : G_(std::move(G)), r_
     for (std::size_t l = 0; l < G_.size(); ++l) {
         validate_G(G_[l], l);
         G_[l] = 0.5 * (G_[l] + G_[l].transpose());
-        // (1.24a): Gt = det(G)^(1/2) G^-1.
-        Gt_.push_back(std::sqrt(G_[l].determinant()) * G_[l].inverse());
+        // (1.24a): Gt = det(G)^(1/2) G^-1, computed for G / s (s its largest entry) and scaled
+        // back by s^(1/2), so that the determinant cannot overflow or underflow.
+        const double s = G_[l].cwiseAbs().maxCoeff();
+        const Matrix3d unit = G_[l] / s;
+        Gt_.push_back(std::sqrt(s * unit.determinant()) * unit.inverse());
         if (!Gt_.back().allFinite())
             throw InvalidInput(term_name(l) + ": G is too close to singular");
         const Vector3d lambda =
@@ -168,6 +180,7 @@ void Anisotropy::terms(const Vector3d& p, std::vector<double>& g, double& gmax) 
 }
 
 double Anisotropy::gamma(const Vector3d& p) const {
+    if (!p.allFinite()) throw InvalidInput("anisotropy: gamma of a non-finite vector");
     std::vector<double> g;
     double gmax;
     terms(p, g, gmax);

@@ -7,10 +7,21 @@
 
 namespace froth {
 
+namespace {
+// beta scales the SD system's kappa block against its position block: far outside this range
+// the factorisation meets entries 1e200 apart and reports a singular matrix, which would not
+// say why. Within it, tau absorbs any time unit.
+constexpr double kMinBeta = 1e-100, kMaxBeta = 1e100;
+bool in_range(double b) { return std::isfinite(b) && b >= kMinBeta && b <= kMaxBeta; }
+} // namespace
+
 Mobility Mobility::constant(double value) {
     if (!(std::isfinite(value) && value > 0))
         throw InvalidInput("set_mobility: beta must be a finite number > 0 (got " + fmt(value) +
                            ")");
+    if (!in_range(value))
+        throw InvalidInput("set_mobility: beta must be between 1e-100 and 1e100 (got " +
+                           fmt(value) + "); scale tau instead");
     Mobility m;
     m.value_ = value;
     return m;
@@ -55,6 +66,10 @@ double Mobility::operator()(const Eigen::Vector3d& nu, double sigma, const Aniso
         throw InvalidInput(where + ": the mobility " + describe() + " is " + fmt(b) +
                            " at the normal (" + fmt(nu[0]) + ", " + fmt(nu[1]) + ", " +
                            fmt(nu[2]) + "); it must be finite and positive");
+    if (!in_range(b))
+        throw InvalidInput(where + ": the mobility " + describe() + " is " + fmt(b) +
+                           " at the normal (" + fmt(nu[0]) + ", " + fmt(nu[1]) + ", " +
+                           fmt(nu[2]) + "); it must be between 1e-100 and 1e100");
     return b;
 }
 

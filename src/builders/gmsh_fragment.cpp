@@ -85,6 +85,30 @@ void check_latitude(const Solid& s, const std::string& who) {
                            "(radians), got {" + num(lo) + ", " + num(hi) + "}");
 }
 
+// OpenCASCADE models to an absolute tolerance of 1e-7: lengths far below it mesh to nothing,
+// and far above it (r = 1e300) its boolean operations run for ever, so both are refused here,
+// before gmsh sees them.
+void check_scale(const Solid& s, const std::string& who) {
+    constexpr double lo = 1e-5, hi = 1e5;
+    double longest = 0, shortest = kInf;
+    auto length = [&](double x) { longest = std::max(longest, x), shortest = std::min(shortest, x); };
+    switch (s.kind) {
+    case SolidKind::ball: length(s.r); break;
+    case SolidKind::box: for (double x : s.size) length(x); break;
+    case SolidKind::cylinder: length(s.r), length(s.axis.norm()); break;
+    case SolidKind::torus: length(s.r), length(s.R); break;
+    }
+    longest *= s.scale.maxCoeff(), shortest *= s.scale.minCoeff();
+    if (!(shortest >= lo && longest <= hi))
+        throw InvalidInput(who + ": its sizes (times scale) span " + num(shortest) + " .. " +
+                           num(longest) + "; they must lie in [1e-5, 1e5] (OpenCASCADE works "
+                           "to an absolute tolerance of 1e-7: scale the whole cluster instead)");
+    for (const Vec3* v : {&s.center, &s.min, &s.base, &s.translate})
+        if (v->cwiseAbs().maxCoeff() > hi)
+            throw InvalidInput(who + ": coordinates must be at most 1e5 in magnitude, got " +
+                               vec(*v));
+}
+
 void check_solid(const FragmentOptions& o, std::size_t k) {
     const Solid& s = o.solids[k];
     const std::string who = label(o, k);
@@ -102,6 +126,7 @@ void check_solid(const FragmentOptions& o, std::size_t k) {
         throw InvalidInput(who + ": rotate axis must be a nonzero vector");
     if (!(s.scale.array() > 0).all())
         throw InvalidInput(who + ": scale must be positive, got " + vec(s.scale));
+    check_scale(s, who);
     if (s.h) check_positive(who, "h", *s.h);
 }
 
@@ -408,10 +433,15 @@ void check_vertex_count(const FragmentOptions& o, const Sizing& z) {
     for (auto [s, h] : z.size[2])
         n += estimated_vertices(entity_area(s), h);
     if (n <= static_cast<double>(o.max_vertices)) return;
+    std::string about = "over 1e18"; // llround of more (or of inf) is undefined
+    if (n < 1e18) {
+        about = "about ";
+        about += std::to_string(std::llround(n));
+    }
     std::string msg = o.op + ": h = " + num(z.h) + (z.local ? " (with the solids' own h)" : "") +
-                      " gives about " + std::to_string(std::llround(n)) + " vertices, more than " +
+                      " gives " + about + " vertices, more than " +
                       std::to_string(o.max_vertices) + "; use a larger h";
-    if (!z.local)
+    if (!z.local && std::isfinite(n))
         msg +=
             " (h >= " + num(z.h * std::sqrt(n / static_cast<double>(o.max_vertices)) * 1.01) + ")";
     throw InvalidInput(msg);

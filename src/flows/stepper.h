@@ -113,6 +113,7 @@ class TimeStepper {
     /// Volume-exact surface diffusion: the fixed point over the averaged normals; returns z.
     Eigen::VectorXd solve_exact_volumes(Cluster& c, double tau, const PositionBasis& P,
                                         StepReport& report);
+    static void check_no_body_vanishes(const Cluster& c, const std::vector<Vec3>& X, double tau);
     FixedPointOptions fixed_point_;
     bool exact_volumes_ = true;
     // Set during a volume-exact step: the pair weights and kappa rows assemble() uses.

@@ -42,6 +42,7 @@ Cluster::Cluster(ClusterSpec spec) {
     classify_edges();
     attach_walls();
     build_triple_lines();
+    check_tension_triangles("cluster");
     std::vector<std::pair<int, int>> vertex_edge;
     for (int e = 0; e < static_cast<int>(junction_edges_.size()); ++e) {
         vertex_edge.emplace_back(junction_edges_[e].a, e);
@@ -124,7 +125,32 @@ void Cluster::set_sigma(int surface, double sigma) {
     if (!(std::isfinite(sigma) && sigma > 0))
         throw InvalidInput("set_sigma: " + surface_name(surface) + ": sigma must be positive, got " +
                            fmt(sigma));
+    const double old = surfaces_[surface].sigma;
     surfaces_[surface].sigma = sigma;
+    try {
+        check_tension_triangles("set_sigma");
+    } catch (const InvalidInput&) {
+        surfaces_[surface].sigma = old; // nothing half-changed
+        throw;
+    }
+}
+
+// Young's law at a triple line, sigma_1 nu_1 + sigma_2 nu_2 + sigma_3 nu_3 = 0 (seed (1.8)),
+// has a solution with three distinct conormals only if each sigma is less than the sum of the
+// other two; otherwise the film of the largest splits the line apart and the seed's schemes
+// have no equilibrium to approach (its well-posedness assumes the strict inequality).
+void Cluster::check_tension_triangles(const char* op) const {
+    for (std::size_t k = 0; k < triple_lines_.size(); ++k) {
+        const std::array<int, 3>& s = triple_lines_[k].surfaces;
+        const double a = surfaces_[s[0]].sigma, b = surfaces_[s[1]].sigma, c = surfaces_[s[2]].sigma;
+        if (a < b + c && b < a + c && c < a + b) continue;
+        throw InvalidInput(std::string(op) + ": the tensions at triple line " +
+                           std::to_string(k + 1) + " (surfaces " + std::to_string(s[0] + 1) +
+                           ", " + std::to_string(s[1] + 1) + ", " + std::to_string(s[2] + 1) +
+                           ": sigma " + fmt(a) + ", " + fmt(b) + ", " + fmt(c) +
+                           ") break the triangle inequality: each must be less than the sum of "
+                           "the other two, or no Young angle exists");
+    }
 }
 
 void Cluster::set_anisotropy(int surface, std::shared_ptr<const Anisotropy> gamma) {

@@ -185,6 +185,8 @@ class Cluster {
     void check_spec(const ClusterSpec& spec) const;
     void classify_edges();
     void build_triple_lines();
+    /// \throw InvalidInput "<op>: the tensions at triple line k ... break the triangle inequality"
+    void check_tension_triangles(const char* op) const;
     void orient_bodies(const std::vector<std::vector<int>>& body_surfaces);
     void attach_walls();
     void find_lids(Body& body) const;

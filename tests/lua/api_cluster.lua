@@ -37,9 +37,9 @@ T.assert_equal(c:time(), 0, "time starts at 0")
 T.assert_equal(c:sigma(2), 1, "default sigma")
 
 -- set_sigma changes the energy to sum sigma_i |Gamma_i|, and nothing else.
-c:set_sigma(3, 2.5)
-T.assert_equal(c:sigma(3), 2.5, "sigma after set_sigma")
-T.assert_near(c:energy(), 2 * cap + 2.5 * 0.5, 1e-14, "energy with sigma_3 = 2.5")
+c:set_sigma(3, 1.5)
+T.assert_equal(c:sigma(3), 1.5, "sigma after set_sigma")
+T.assert_near(c:energy(), 2 * cap + 1.5 * 0.5, 1e-14, "energy with sigma_3 = 1.5")
 T.assert_near(c:area(3), 0.5, 1e-15, "set_sigma leaves the area")
 
 -- vertex(i) returns a fresh copy of the position.
@@ -91,20 +91,20 @@ T.assert_near(r.mesh.min_area, 0.5, 1e-15, "smallest facet area")
 T.assert_equal(tostring(c), "froth.Cluster (5 vertices, 7 facets, 3 surfaces, 1 triple lines, " ..
                "0 quadruple points, 2 bodies, t = 0.0)", "tostring")
 local d = c:clone()
-d:set_sigma(1, 4)
+d:set_sigma(1, 2)
 d:step{flow = "mcf", tau = 1e-3}
 T.assert_equal(c:sigma(1), 1, "the original keeps its sigma")
-T.assert_equal(d:sigma(3), 2.5, "the clone copied sigma")
+T.assert_equal(d:sigma(3), 1.5, "the clone copied sigma")
 T.assert_equal(c:time(), 0, "the original keeps its time")
 T.assert_near(d:time(), 1e-3, 0, "the clone stepped")
 T.assert_equal(c:vertex(4)[3], 1, "the original keeps its positions")
 T.assert_true(d:vertex(4)[3] ~= 1, "the clone moved")
 
 -- The {facets = ..., sigma = ...} form of a surface, and a cluster without bodies.
-local e = froth.cluster{vertices = V, surfaces = {S[1], {facets = S[2], sigma = 3}, {facets = S[3]}}}
-T.assert_equal(e:sigma(2), 3, "sigma from the surface table")
+local e = froth.cluster{vertices = V, surfaces = {S[1], {facets = S[2], sigma = 1.75}, {facets = S[3]}}}
+T.assert_equal(e:sigma(2), 1.75, "sigma from the surface table")
 T.assert_equal(e:sigma(3), 1, "sigma defaults to 1")
-T.assert_near(e:energy(), cap + 3 * cap + 0.5, 1e-14, "energy with sigma_2 = 3")
+T.assert_near(e:energy(), cap + 1.75 * cap + 0.5, 1e-14, "energy with sigma_2 = 1.75")
 T.assert_equal(#e:volumes(), 0, "no bodies, no volumes")
 T.assert_equal(e:info().bodies, 0, "bodies are optional")
 
@@ -191,7 +191,9 @@ for _, bad in ipairs{0, -1, 0 / 0, math.huge} do
 end
 T.check_error("number expected, got string", c.set_sigma, c, 1, "big")
 T.assert_equal(c:sigma(1), 1, "a failed set_sigma keeps the old sigma")
-T.assert_near(c:energy(), 2 * cap + 2.5 * 0.5, 1e-14, "a failed set_sigma keeps the energy")
+T.check_error("set_sigma: the tensions at triple line 1 (surfaces 1, 2, 3: sigma 1, 1, 2) break the triangle inequality", c.set_sigma, c, 3, 2)
+T.assert_equal(c:sigma(3), 1.5, "a set_sigma that breaks the triangle inequality keeps the old sigma")
+T.assert_near(c:energy(), 2 * cap + 1.5 * 0.5, 1e-14, "a failed set_sigma keeps the energy")
 
 -- Errors of froth.cluster: malformed tables.
 local function bad(text, over) T.check_error(text, froth.cluster, spec(over)) end

@@ -110,7 +110,7 @@ do
   T.assert_true(r:volumes()[1] == vol[1] and r:volumes()[2] == vol[2], "read: same volumes")
   T.assert_equal(r:time(), 0, "read: time starts at 0")
   local b = froth.has("gmsh") and froth.double_bubble{h = 0.3} or froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
-  b:set_sigma(3, 2)
+  b:set_sigma(3, 1.5)
   b:write(path("db.msh"))
   local rb = froth.read(dir .. "/db.msh")
   local bi, rbi = b:info(), rb:info()
