@@ -2,6 +2,7 @@
 #include "bindings/gmsh_plugin.h"
 
 #include "core/errors.h"
+#include "core/interrupt.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -40,7 +41,11 @@ const GmshBuilders* load() {
         }
         using Entry = const GmshBuilders* (*)();
         auto entry = reinterpret_cast<Entry>(dlsym(handle, "froth_gmsh_builders"));
-        if (entry) return entry();
+        if (entry) {
+            const GmshBuilders* table = entry();
+            table->use_interrupt_flag({&interrupt_requests, &consume_interrupt});
+            return table;
+        }
         tried += "\n  " + path + ": no symbol froth_gmsh_builders";
     }
     throw IoError("gmsh: cannot load the gmsh builders plugin (set FROTH_GMSH_PLUGIN to "

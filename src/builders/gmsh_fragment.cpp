@@ -40,7 +40,9 @@ std::string label(const FragmentOptions& o, std::size_t k) {
 }
 
 std::string vec(const Vec3& v) {
-    return "{" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "}";
+    std::string s = "{"; // appended, not "{" + ...: GCC 12's -Wrestrict misfires on that
+    s += num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "}";
+    return s;
 }
 
 void check_positive(const std::string& who, const std::string& what, double x) {

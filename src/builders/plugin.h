@@ -7,6 +7,7 @@
 
 #include "builders/fragment.h"
 #include "builders/gmsh_builder.h"
+#include "builders/isolated.h"
 
 namespace froth {
 
@@ -14,6 +15,9 @@ struct GmshBuilders {
     ClusterSpec (*double_bubble)(const DoubleBubbleOptions&);
     ClusterSpec (*sphere)(const SphereOptions&);
     ClusterSpec (*fragment)(const FragmentOptions&);
+    /// The plugin links its own copy of froth_core, so its Ctrl-C flag is not the
+    /// executable's: the loader hands over the executable's (builders/isolated.h polls it).
+    void (*use_interrupt_flag)(const InterruptFlag&);
 };
 
 /// The table of this module's builders (what the plugin's entry point returns).

@@ -31,6 +31,11 @@ struct SolverError : Error {
 struct ConvergenceError : SolverError {
     using SolverError::SolverError;
 };
+/// The user asked to stop (Ctrl-C) an operation that cannot stop half-way and be kept
+/// (meshing); nothing was built or changed.
+struct Interrupted : Error {
+    using Error::Error;
+};
 /// A file could not be read or written.
 struct IoError : Error {
     using Error::Error;
