@@ -21,7 +21,14 @@ InterruptFlag g_flag{&interrupt_requests, &consume_interrupt};
 
 // The message: one status byte, then either a ClusterSpec or an error (kind byte + text).
 enum : char { kSpec = 'S', kError = 'E' };
-enum ErrorKind : char { kInvalid = 'I', kTopology = 'T', kGeometry = 'G', kIo = 'O', kSolver = 'V', kOther = 'X' };
+enum ErrorKind : char {
+    kInvalid = 'I',
+    kTopology = 'T',
+    kGeometry = 'G',
+    kIo = 'O',
+    kSolver = 'V',
+    kOther = 'X'
+};
 
 class Writer {
   public:
@@ -43,7 +50,8 @@ class Reader {
   public:
     explicit Reader(std::string_view b) : b_(b) {}
     template <class T> T get() {
-        if (b_.size() - at_ < sizeof(T)) throw GeometryError("meshing: the child's message is truncated");
+        if (b_.size() - at_ < sizeof(T))
+            throw GeometryError("meshing: the child's message is truncated");
         T x;
         std::memcpy(&x, b_.data() + at_, sizeof(T));
         at_ += sizeof(T);
@@ -51,7 +59,8 @@ class Reader {
     }
     std::size_t count(std::size_t item_bytes) { // bounded by what is left: no huge allocation
         const auto n = get<std::uint64_t>();
-        if (n > (b_.size() - at_) / item_bytes) throw GeometryError("meshing: the child's message is malformed");
+        if (n > (b_.size() - at_) / item_bytes)
+            throw GeometryError("meshing: the child's message is malformed");
         return static_cast<std::size_t>(n);
     }
     std::string get_string() {
@@ -70,17 +79,20 @@ std::string encode(const ClusterSpec& spec) {
     Writer w;
     w.put(kSpec);
     w.put<std::uint64_t>(spec.vertices.size());
-    for (const Vec3& x : spec.vertices) w.put(x[0]), w.put(x[1]), w.put(x[2]);
+    for (const Vec3& x : spec.vertices)
+        w.put(x[0]), w.put(x[1]), w.put(x[2]);
     w.put<std::uint64_t>(spec.surfaces.size());
     for (const ClusterSpec::Surface& s : spec.surfaces) {
         w.put(s.sigma);
         w.put<std::uint64_t>(s.triangles.size());
-        for (const Tri& t : s.triangles) w.put(t[0]), w.put(t[1]), w.put(t[2]);
+        for (const Tri& t : s.triangles)
+            w.put(t[0]), w.put(t[1]), w.put(t[2]);
     }
     w.put<std::uint64_t>(spec.bodies.size());
     for (const std::vector<int>& b : spec.bodies) {
         w.put<std::uint64_t>(b.size());
-        for (int s : b) w.put(s);
+        for (int s : b)
+            w.put(s);
     }
     return w.bytes();
 }
@@ -89,18 +101,21 @@ ClusterSpec decode_spec(Reader& r) {
     ClusterSpec spec;
     spec.vertices.resize(r.count(3 * sizeof(double)));
     for (Vec3& x : spec.vertices)
-        for (int d = 0; d < 3; ++d) x[d] = r.get<double>();
+        for (int d = 0; d < 3; ++d)
+            x[d] = r.get<double>();
     spec.surfaces.resize(r.count(sizeof(double) + 8));
     for (ClusterSpec::Surface& s : spec.surfaces) {
         s.sigma = r.get<double>();
         s.triangles.resize(r.count(3 * sizeof(int)));
         for (Tri& t : s.triangles)
-            for (int k = 0; k < 3; ++k) t[k] = r.get<int>();
+            for (int k = 0; k < 3; ++k)
+                t[k] = r.get<int>();
     }
     spec.bodies.resize(r.count(8));
     for (std::vector<int>& b : spec.bodies) {
         b.resize(r.count(sizeof(int)));
-        for (int& s : b) s = r.get<int>();
+        for (int& s : b)
+            s = r.get<int>();
     }
     return spec;
 }
@@ -115,12 +130,18 @@ std::string encode_error(ErrorKind kind, const std::string& what) {
 
 [[noreturn]] void rethrow(ErrorKind kind, const std::string& what) {
     switch (kind) {
-    case kInvalid: throw InvalidInput(what);
-    case kTopology: throw TopologyError(what);
-    case kGeometry: throw GeometryError(what);
-    case kIo: throw IoError(what);
-    case kSolver: throw SolverError(what);
-    default: throw Error(what);
+    case kInvalid:
+        throw InvalidInput(what);
+    case kTopology:
+        throw TopologyError(what);
+    case kGeometry:
+        throw GeometryError(what);
+    case kIo:
+        throw IoError(what);
+    case kSolver:
+        throw SolverError(what);
+    default:
+        throw Error(what);
     }
 }
 
@@ -141,13 +162,20 @@ void write_all(int fd, const std::string& bytes) {
     std::string message;
     try {
         message = encode(build());
-    } catch (const InvalidInput& e) { message = encode_error(kInvalid, e.what());
-    } catch (const TopologyError& e) { message = encode_error(kTopology, e.what());
-    } catch (const GeometryError& e) { message = encode_error(kGeometry, e.what());
-    } catch (const IoError& e) { message = encode_error(kIo, e.what());
-    } catch (const SolverError& e) { message = encode_error(kSolver, e.what());
-    } catch (const std::exception& e) { message = encode_error(kOther, e.what());
-    } catch (...) { message = encode_error(kOther, "unknown error while meshing");
+    } catch (const InvalidInput& e) {
+        message = encode_error(kInvalid, e.what());
+    } catch (const TopologyError& e) {
+        message = encode_error(kTopology, e.what());
+    } catch (const GeometryError& e) {
+        message = encode_error(kGeometry, e.what());
+    } catch (const IoError& e) {
+        message = encode_error(kIo, e.what());
+    } catch (const SolverError& e) {
+        message = encode_error(kSolver, e.what());
+    } catch (const std::exception& e) {
+        message = encode_error(kOther, e.what());
+    } catch (...) {
+        message = encode_error(kOther, "unknown error while meshing");
     }
     write_all(fd, message);
     ::close(fd);
@@ -168,7 +196,8 @@ std::string receive(int fd, pid_t pid, const std::string& op) {
         if (g_flag.requests() > 0) {
             g_flag.consume();
             stop_child(pid);
-            throw Interrupted(op + ": interrupted (Ctrl-C) while gmsh was meshing; nothing was built");
+            throw Interrupted(op +
+                              ": interrupted (Ctrl-C) while gmsh was meshing; nothing was built");
         }
         pollfd p{fd, POLLIN, 0};
         const int ready = ::poll(&p, 1, 50);
@@ -183,11 +212,14 @@ std::string receive(int fd, pid_t pid, const std::string& op) {
 
 } // namespace
 
-void use_interrupt_flag(const InterruptFlag& flag) { g_flag = flag; }
+void use_interrupt_flag(const InterruptFlag& flag) {
+    g_flag = flag;
+}
 
 ClusterSpec run_isolated(const std::string& op, const std::function<ClusterSpec()>& build) {
     int fds[2];
-    if (::pipe(fds) != 0) throw GeometryError(op + ": cannot start the meshing process: " + std::strerror(errno));
+    if (::pipe(fds) != 0)
+        throw GeometryError(op + ": cannot start the meshing process: " + std::strerror(errno));
     const pid_t pid = ::fork();
     if (pid < 0) {
         const int err = errno;

@@ -26,10 +26,10 @@ struct MshModel {
         Vec3 x;
     };
     std::vector<Node> nodes;
-    std::map<int, std::vector<NodeTri>> triangles; ///< surface entity tag -> its triangles
-    std::map<int, std::vector<int>> surface_physicals;  ///< surface entity -> physical tags
-    std::map<int, std::vector<int>> volume_physicals;   ///< volume entity -> physical tags
-    std::map<int, std::vector<int>> volume_boundaries;  ///< volume entity -> surface entities
+    std::map<int, std::vector<NodeTri>> triangles;     ///< surface entity tag -> its triangles
+    std::map<int, std::vector<int>> surface_physicals; ///< surface entity -> physical tags
+    std::map<int, std::vector<int>> volume_physicals;  ///< volume entity -> physical tags
+    std::map<int, std::vector<int>> volume_boundaries; ///< volume entity -> surface entities
     bool has_volume_entities = false;
 };
 
@@ -38,8 +38,8 @@ struct MshModel {
 /// before anything is sized by them.
 class Tokens {
   public:
-    Tokens(std::string_view text, std::string where) : p_(text.data()), end_(p_ + text.size()),
-                                                       where_(std::move(where)) {}
+    Tokens(std::string_view text, std::string where)
+        : p_(text.data()), end_(p_ + text.size()), where_(std::move(where)) {}
 
     bool at_end() {
         skip_space();
@@ -50,7 +50,8 @@ class Tokens {
         skip_space();
         if (p_ == end_) fail(std::string("unexpected end of file, expected ") + what);
         const char* start = p_;
-        while (p_ != end_ && !is_space(*p_)) ++p_;
+        while (p_ != end_ && !is_space(*p_))
+            ++p_;
         return {start, static_cast<std::size_t>(p_ - start)};
     }
 
@@ -113,7 +114,8 @@ class Tokens {
         return std::string(t.substr(0, 40)) + (t.size() > 40 ? "..." : "");
     }
     void skip_space() {
-        while (p_ != end_ && is_space(*p_)) line_ += *p_++ == '\n';
+        while (p_ != end_ && is_space(*p_))
+            line_ += *p_++ == '\n';
     }
     const char* p_;
     const char* end_;
@@ -123,15 +125,16 @@ class Tokens {
 
 /// Nodes per element of the gmsh element types 1..31 (0: not a type); other types are refused.
 int nodes_of_type(int type) {
-    static const int n[32] = {0,  2,  3,  4,  4,  8,  6,  5,  3,  6,  9,  10, 27, 18, 14, 1,
-                              8,  20, 15, 13, 9,  10, 12, 15, 15, 21, 4,  5,  6,  20, 35, 56};
+    static const int n[32] = {0, 2,  3,  4,  4, 8,  6,  5,  3,  6,  9, 10, 27, 18, 14, 1,
+                              8, 20, 15, 13, 9, 10, 12, 15, 15, 21, 4, 5,  6,  20, 35, 56};
     return type >= 1 && type <= 31 ? n[type] : 0;
 }
 constexpr int kTriangle = 2;
 
 void read_tags(Tokens& t, std::vector<int>& into, const char* what) {
     const std::size_t n = t.count(what, 1);
-    for (std::size_t i = 0; i < n; ++i) into.push_back(t.tag(what));
+    for (std::size_t i = 0; i < n; ++i)
+        into.push_back(t.tag(what));
 }
 
 // $Entities (4.1): points, curves, surfaces, volumes with their physical tags; volumes also
@@ -142,14 +145,16 @@ void read_entities(Tokens& t, MshModel& m) {
     std::vector<int> ignored;
     for (std::size_t i = 0; i < np; ++i) {
         t.tag("point tag");
-        for (int d = 0; d < 3; ++d) t.real("point coordinate");
+        for (int d = 0; d < 3; ++d)
+            t.real("point coordinate");
         read_tags(t, ignored, "number of physical tags");
     }
     const std::size_t counts[3] = {nc, ns, nv};
     for (int dim = 1; dim <= 3; ++dim)
         for (std::size_t i = 0; i < counts[dim - 1]; ++i) {
             const int tag = t.tag("entity tag");
-            for (int d = 0; d < 6; ++d) t.real("bounding box coordinate");
+            for (int d = 0; d < 6; ++d)
+                t.real("bounding box coordinate");
             std::vector<int> physicals, boundary;
             read_tags(t, physicals, "number of physical tags");
             read_tags(t, boundary, "number of bounding entities");
@@ -157,7 +162,8 @@ void read_entities(Tokens& t, MshModel& m) {
             if (dim == 3) {
                 m.has_volume_entities = true;
                 m.volume_physicals[tag] = std::move(physicals);
-                for (int& b : boundary) b = std::abs(b);
+                for (int& b : boundary)
+                    b = std::abs(b);
                 m.volume_boundaries[tag] = std::move(boundary);
             }
         }
@@ -175,14 +181,20 @@ void read_nodes_41(Tokens& t, MshModel& m) {
         t.tag("entity tag");
         const bool parametric = t.integer("parametric flag", 0, 1) == 1;
         const std::size_t n = t.count("number of nodes in block", 4);
-        if (m.nodes.size() + n > total) t.fail("the node blocks hold more than the " + std::to_string(total) + " nodes announced");
+        if (m.nodes.size() + n > total)
+            t.fail("the node blocks hold more than the " + std::to_string(total) +
+                   " nodes announced");
         const std::size_t first = m.nodes.size();
         for (std::size_t i = 0; i < n; ++i)
-            m.nodes.push_back({static_cast<std::size_t>(t.integer("node tag", 1, std::numeric_limits<long long>::max())), Vec3::Zero()});
+            m.nodes.push_back({static_cast<std::size_t>(
+                                   t.integer("node tag", 1, std::numeric_limits<long long>::max())),
+                               Vec3::Zero()});
         const int params = parametric ? std::min(dim, 2) : 0; // u on curves, u v on surfaces
         for (std::size_t i = 0; i < n; ++i) {
-            for (int d = 0; d < 3; ++d) m.nodes[first + i].x[d] = t.real("node coordinate");
-            for (int k = 0; k < params; ++k) t.real("node parameter");
+            for (int d = 0; d < 3; ++d)
+                m.nodes[first + i].x[d] = t.real("node coordinate");
+            for (int k = 0; k < params; ++k)
+                t.real("node parameter");
         }
     }
     if (m.nodes.size() != total)
@@ -202,16 +214,21 @@ void read_elements_41(Tokens& t, MshModel& m) {
         const int entity = t.tag("entity tag");
         const int type = t.tag("element type");
         const int per = nodes_of_type(type);
-        if (per == 0) t.fail("element type " + std::to_string(type) + " is not a gmsh element type froth knows");
+        if (per == 0)
+            t.fail("element type " + std::to_string(type) +
+                   " is not a gmsh element type froth knows");
         const std::size_t n = t.count("number of elements in block", per + 1);
         seen += n;
-        if (seen > total) t.fail("the element blocks hold more than the " + std::to_string(total) + " elements announced");
+        if (seen > total)
+            t.fail("the element blocks hold more than the " + std::to_string(total) +
+                   " elements announced");
         std::vector<NodeTri>* tris = type == kTriangle && dim == 2 ? &m.triangles[entity] : nullptr;
         for (std::size_t i = 0; i < n; ++i) {
             t.integer("element tag", 0, std::numeric_limits<long long>::max());
             NodeTri tri{};
             for (int k = 0; k < per; ++k) {
-                const auto node = static_cast<std::size_t>(t.integer("node tag", 1, std::numeric_limits<long long>::max()));
+                const auto node = static_cast<std::size_t>(
+                    t.integer("node tag", 1, std::numeric_limits<long long>::max()));
                 if (tris) tri[k] = node;
             }
             if (tris) tris->push_back(tri);
@@ -227,8 +244,11 @@ void read_nodes_22(Tokens& t, MshModel& m) {
     const std::size_t n = t.count("number of nodes", 4);
     m.nodes.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
-        MshModel::Node node{static_cast<std::size_t>(t.integer("node tag", 1, std::numeric_limits<long long>::max())), Vec3::Zero()};
-        for (int d = 0; d < 3; ++d) node.x[d] = t.real("node coordinate");
+        MshModel::Node node{static_cast<std::size_t>(
+                                t.integer("node tag", 1, std::numeric_limits<long long>::max())),
+                            Vec3::Zero()};
+        for (int d = 0; d < 3; ++d)
+            node.x[d] = t.real("node coordinate");
         m.nodes.push_back(node);
     }
     t.expect("$EndNodes");
@@ -242,7 +262,9 @@ void read_elements_22(Tokens& t, MshModel& m) {
         t.integer("element tag", 0, std::numeric_limits<long long>::max());
         const int type = t.tag("element type");
         const int per = nodes_of_type(type);
-        if (per == 0) t.fail("element type " + std::to_string(type) + " is not a gmsh element type froth knows");
+        if (per == 0)
+            t.fail("element type " + std::to_string(type) +
+                   " is not a gmsh element type froth knows");
         const int ntags = static_cast<int>(t.integer("number of element tags", 0, 64));
         int physical = 0, entity = 0;
         for (int k = 0; k < ntags; ++k) {
@@ -252,7 +274,8 @@ void read_elements_22(Tokens& t, MshModel& m) {
         }
         NodeTri tri{};
         for (int k = 0; k < per; ++k) {
-            const auto node = static_cast<std::size_t>(t.integer("node tag", 1, std::numeric_limits<long long>::max()));
+            const auto node = static_cast<std::size_t>(
+                t.integer("node tag", 1, std::numeric_limits<long long>::max()));
             if (type == kTriangle) tri[k] = node;
         }
         if (type != kTriangle) continue;
@@ -270,7 +293,8 @@ MshModel read_model(Tokens& t) {
     const std::string_view version = t.next("the format version");
     const bool v41 = version == "4.1";
     if (!v41 && version != "2.2" && version != "2.1" && version != "2")
-        t.fail("MSH version " + std::string(version) + " is not read (froth reads ASCII MSH 4.1 "
+        t.fail("MSH version " + std::string(version) +
+               " is not read (froth reads ASCII MSH 4.1 "
                "and 2.2: gmsh -save -format msh41 converts)");
     if (t.integer("the file type", 0, 1) != 0)
         t.fail("binary MSH is not read (save it as ASCII: gmsh -save -format msh41 -bin 0)");
@@ -279,7 +303,9 @@ MshModel read_model(Tokens& t) {
     bool nodes = false, elements = false;
     while (!t.at_end()) {
         const std::string_view section = t.next("a section");
-        if (section.size() < 2 || section[0] != '$') t.fail("expected a section ($Nodes, ...), got '" + std::string(section.substr(0, 40)) + "'");
+        if (section.size() < 2 || section[0] != '$')
+            t.fail("expected a section ($Nodes, ...), got '" + std::string(section.substr(0, 40)) +
+                   "'");
         const std::string_view name = section.substr(1);
         if ((name == "Nodes" && nodes) || (name == "Elements" && elements))
             t.fail("a second $" + std::string(name) + " section");
@@ -307,38 +333,48 @@ std::vector<std::vector<int>> groups_of(const std::map<int, std::vector<int>>& p
     std::map<int, std::vector<int>> by_tag;
     for (int e : entities)
         if (auto it = physicals.find(e); it != physicals.end())
-            for (int p : it->second) by_tag[p].push_back(e);
+            for (int p : it->second)
+                by_tag[p].push_back(e);
     physical = !by_tag.empty();
     std::vector<std::vector<int>> groups;
     if (physical)
-        for (auto& [tag, members] : by_tag) groups.push_back(std::move(members));
+        for (auto& [tag, members] : by_tag)
+            groups.push_back(std::move(members));
     else
-        for (int e : entities) groups.push_back({e});
+        for (int e : entities)
+            groups.push_back({e});
     return groups;
 }
 
 ClusterSpec build_spec(MshModel& m, const std::string& where) {
     // Surface entities: every one with triangles or listed in $Entities, in tag order.
     std::set<int> surface_entities;
-    for (auto& [e, tris] : m.triangles) if (!tris.empty()) surface_entities.insert(e);
-    for (auto& [e, ph] : m.surface_physicals) surface_entities.insert(e);
+    for (auto& [e, tris] : m.triangles)
+        if (!tris.empty()) surface_entities.insert(e);
+    for (auto& [e, ph] : m.surface_physicals)
+        surface_entities.insert(e);
     bool physical = false;
     std::vector<std::vector<int>> films;
-    for (auto& group : groups_of(m.surface_physicals, {surface_entities.begin(), surface_entities.end()}, physical)) {
+    for (auto& group : groups_of(m.surface_physicals,
+                                 {surface_entities.begin(), surface_entities.end()}, physical)) {
         std::size_t n = 0;
-        for (int e : group) if (auto it = m.triangles.find(e); it != m.triangles.end()) n += it->second.size();
+        for (int e : group)
+            if (auto it = m.triangles.find(e); it != m.triangles.end()) n += it->second.size();
         if (n == 0 && physical)
-            throw IoError(where + "physical surface " + std::to_string(films.size() + 1) + " has no triangles");
+            throw IoError(where + "physical surface " + std::to_string(films.size() + 1) +
+                          " has no triangles");
         if (n > 0) films.push_back(std::move(group));
     }
     if (films.empty()) return {};
 
-    std::sort(m.nodes.begin(), m.nodes.end(), [](const auto& a, const auto& b) { return a.tag < b.tag; });
+    std::sort(m.nodes.begin(), m.nodes.end(),
+              [](const auto& a, const auto& b) { return a.tag < b.tag; });
     for (std::size_t i = 1; i < m.nodes.size(); ++i)
         if (m.nodes[i].tag == m.nodes[i - 1].tag)
             throw IoError(where + "node " + std::to_string(m.nodes[i].tag) + " is defined twice");
     auto row = [&](std::size_t tag) -> std::size_t {
-        auto it = std::lower_bound(m.nodes.begin(), m.nodes.end(), tag, [](const auto& n, std::size_t t) { return n.tag < t; });
+        auto it = std::lower_bound(m.nodes.begin(), m.nodes.end(), tag,
+                                   [](const auto& n, std::size_t t) { return n.tag < t; });
         if (it == m.nodes.end() || it->tag != tag)
             throw IoError(where + "triangle node " + std::to_string(tag) + " has no coordinates");
         return static_cast<std::size_t>(it - m.nodes.begin());
@@ -349,32 +385,41 @@ ClusterSpec build_spec(MshModel& m, const std::string& where) {
     std::vector<std::size_t> used;
     for (std::size_t f = 0; f < films.size(); ++f) {
         std::vector<std::vector<NodeTri>> parts;
-        for (int e : films[f]) if (auto it = m.triangles.find(e); it != m.triangles.end()) parts.push_back(std::move(it->second));
+        for (int e : films[f])
+            if (auto it = m.triangles.find(e); it != m.triangles.end())
+                parts.push_back(std::move(it->second));
         orient_parts(parts, where + "surface " + std::to_string(f + 1));
-        for (auto& part : parts) tris[f].insert(tris[f].end(), part.begin(), part.end());
+        for (auto& part : parts)
+            tris[f].insert(tris[f].end(), part.begin(), part.end());
         for (const NodeTri& t : tris[f])
-            for (std::size_t node : t) used.push_back(row(node));
+            for (std::size_t node : t)
+                used.push_back(row(node));
     }
     std::sort(used.begin(), used.end());
     used.erase(std::unique(used.begin(), used.end()), used.end());
     if (used.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
         throw IoError(where + "too many vertices");
-    for (std::size_t r : used) spec.vertices.push_back(m.nodes[r].x);
+    for (std::size_t r : used)
+        spec.vertices.push_back(m.nodes[r].x);
     auto id = [&](std::size_t tag) {
-        return static_cast<int>(std::lower_bound(used.begin(), used.end(), row(tag)) - used.begin());
+        return static_cast<int>(std::lower_bound(used.begin(), used.end(), row(tag)) -
+                                used.begin());
     };
     for (std::size_t f = 0; f < films.size(); ++f) {
         ClusterSpec::Surface s;
         s.triangles.reserve(tris[f].size());
-        for (const NodeTri& t : tris[f]) s.triangles.push_back({id(t[0]), id(t[1]), id(t[2])});
+        for (const NodeTri& t : tris[f])
+            s.triangles.push_back({id(t[0]), id(t[1]), id(t[2])});
         spec.surfaces.push_back(std::move(s));
     }
 
     std::unordered_map<int, int> film_of; // surface entity -> froth surface
     for (std::size_t f = 0; f < films.size(); ++f)
-        for (int e : films[f]) film_of.emplace(e, static_cast<int>(f));
+        for (int e : films[f])
+            film_of.emplace(e, static_cast<int>(f));
     std::vector<int> volumes;
-    for (auto& [v, b] : m.volume_boundaries) volumes.push_back(v);
+    for (auto& [v, b] : m.volume_boundaries)
+        volumes.push_back(v);
     for (const std::vector<int>& group : groups_of(m.volume_physicals, volumes, physical)) {
         std::vector<int> body;
         for (int v : group)

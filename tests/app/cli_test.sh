@@ -83,5 +83,32 @@ check "-l module" 0 '^aa$' '' -- "$FROTH" -l string -e 'print(string.rep("a", 2)
 check "no banner without a terminal" 0 '^42$' '' -- "$FROTH" "$TMP/chunk.lua"
 [[ $(grep -c . "$TMP/out") == 1 ]] || { failed=$((failed + 1)); echo "FAIL banner printed"; }
 
+# Ctrl-C during gmsh meshing is served at once (the mesh runs in a child process that is
+# killed), the script goes on, and no meshing process is left behind. The mesh asked for takes
+# about 90 s on one core; the check allows 20 s from the interrupt.
+if "$FROTH" -e 'os.exit(froth.has("gmsh") and 0 or 1)'; then
+    cat >"$TMP/mesh.lua" <<'LUA'
+local ok, err = pcall(froth.double_bubble, {h = 0.006})
+print(ok, err)
+print(froth.double_bubble{h = 0.3}:info().bodies)
+LUA
+    "$FROTH" "$TMP/mesh.lua" >"$TMP/out" 2>"$TMP/err" &
+    pid=$!
+    sleep 2
+    kill -INT "$pid"
+    start=$SECONDS
+    wait "$pid"
+    rc=$?
+    if [[ $rc != 0 ]] || (( SECONDS - start > 20 )) ||
+        ! grep -q 'double_bubble: interrupted (Ctrl-C) while gmsh was meshing; nothing was built' "$TMP/out" ||
+        ! grep -q '^2$' "$TMP/out" || pgrep -f "$TMP/mesh.lua" >/dev/null; then
+        failed=$((failed + 1))
+        echo "FAIL Ctrl-C during meshing: rc $rc after $((SECONDS - start)) s"
+        sed 's/^/  stdout: /' "$TMP/out"
+    else
+        passed=$((passed + 1))
+    fi
+fi
+
 echo "$passed passed, $failed failed"
 [[ $failed == 0 ]]

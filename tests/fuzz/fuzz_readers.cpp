@@ -1,6 +1,7 @@
 // froth_fuzz: a deterministic mutation fuzzer for froth's file readers (issue 17).
 //
-//   froth_fuzz <reader> <seed files...> [--iterations N] [--seed S] [--only K] [--crashes DIR]
+//   froth_fuzz <reader> <seed files...> [--iterations N] [--seconds T] [--seed S] [--only K]
+//              [--max-ms M] [--crashes DIR]
 //
 // Input k is seed file k mod #seeds with 1-4 mutations drawn from splitmix64(S, k): a token
 // replaced by a hostile value (huge counts, negative tags, nan, inf, section names), a line
@@ -9,7 +10,8 @@
 // froth.read. A froth::Error is the expected outcome of bad input; anything else (another
 // exception, a crash caught by the sanitizers, an input slower than --max-ms) fails the run.
 // The failing input is written to DIR (default: the working directory) and `--only K` replays
-// it. Run under ASan/UBSan in CI (.ci/run) so memory errors abort at the first bad access.
+// it. --seconds is the time budget: the run stops early (and says so) rather than overrun CI.
+// Run under ASan/UBSan in CI (.ci/run) so memory errors abort at the first bad access.
 #include "core/errors.h"
 #include "io/msh_reader.h"
 #include "mesh/cluster.h"
@@ -50,11 +52,45 @@ struct Random {
 };
 
 const char* const kHostile[] = {
-    "-1", "0", "1", "2", "3", "4", "-2147483648", "2147483647", "2147483648", "2000000000",
-    "1000000000000", "9223372036854775807", "18446744073709551616", "nan", "inf", "-inf",
-    "1e308", "1e300", "-1e300", "1e-300", "0x10", "+5", "4.1", "2.2", "1.0", "$Nodes",
-    "$EndNodes", "$Elements", "$EndElements", "$Entities", "$EndEntities", "$PhysicalNames",
-    "$MeshFormat", "\"", "\"name with space", "", "99", "15", "31",
+    "-1",
+    "0",
+    "1",
+    "2",
+    "3",
+    "4",
+    "-2147483648",
+    "2147483647",
+    "2147483648",
+    "2000000000",
+    "1000000000000",
+    "9223372036854775807",
+    "18446744073709551616",
+    "nan",
+    "inf",
+    "-inf",
+    "1e308",
+    "1e300",
+    "-1e300",
+    "1e-300",
+    "0x10",
+    "+5",
+    "4.1",
+    "2.2",
+    "1.0",
+    "$Nodes",
+    "$EndNodes",
+    "$Elements",
+    "$EndElements",
+    "$Entities",
+    "$EndEntities",
+    "$PhysicalNames",
+    "$MeshFormat",
+    "\"",
+    "\"name with space",
+    "",
+    "99",
+    "15",
+    "31",
 };
 
 std::vector<std::size_t> line_starts(const std::string& s) {
@@ -72,9 +108,11 @@ std::pair<std::size_t, std::size_t> line_at(const std::string& s, std::size_t st
 void replace_token(std::string& s, Random& r) {
     if (s.empty()) return;
     std::size_t i = r.below(s.size());
-    while (i > 0 && !std::isspace(static_cast<unsigned char>(s[i - 1]))) --i;
+    while (i > 0 && !std::isspace(static_cast<unsigned char>(s[i - 1])))
+        --i;
     std::size_t j = i;
-    while (j < s.size() && !std::isspace(static_cast<unsigned char>(s[j]))) ++j;
+    while (j < s.size() && !std::isspace(static_cast<unsigned char>(s[j])))
+        ++j;
     s.replace(i, j - i, kHostile[r.below(std::size(kHostile))]);
 }
 
@@ -83,8 +121,12 @@ void mutate_lines(std::string& s, Random& r) {
     auto [a, b] = line_at(s, starts[r.below(starts.size())]);
     const std::string line = s.substr(a, b - a);
     switch (r.below(3)) {
-    case 0: s.erase(a, b - a); break;
-    case 1: s.insert(a, line); break;
+    case 0:
+        s.erase(a, b - a);
+        break;
+    case 1:
+        s.insert(a, line);
+        break;
     default: {
         auto [c, d] = line_at(s, starts[r.below(starts.size())]);
         if (c > a) {
@@ -101,8 +143,12 @@ void mutate_bytes(std::string& s, Random& r) {
     case 0:
         if (!s.empty()) s[r.below(s.size())] ^= static_cast<char>(1u << r.below(8));
         break;
-    case 1: s.insert(r.below(s.size() + 1), 1, static_cast<char>(r.below(256))); break;
-    default: s.resize(r.below(s.size() + 1)); break; // cut short
+    case 1:
+        s.insert(r.below(s.size() + 1), 1, static_cast<char>(r.below(256)));
+        break;
+    default:
+        s.resize(r.below(s.size() + 1));
+        break; // cut short
     }
 }
 
@@ -112,9 +158,12 @@ std::string mutated(const std::string& seed, std::uint64_t base, std::uint64_t k
     const std::size_t n = 1 + r.below(4);
     for (std::size_t m = 0; m < n; ++m) {
         const std::size_t kind = r.below(10);
-        if (kind < 6) replace_token(s, r);
-        else if (kind < 8) mutate_lines(s, r);
-        else mutate_bytes(s, r);
+        if (kind < 6)
+            replace_token(s, r);
+        else if (kind < 8)
+            mutate_lines(s, r);
+        else
+            mutate_bytes(s, r);
     }
     return s;
 }
@@ -138,8 +187,8 @@ const char* run_one(const Reader& reader, const std::string& input) {
 }
 
 [[noreturn]] void usage() {
-    std::cerr << "usage: froth_fuzz <reader: msh> <seed files...> [--iterations N] [--seed S] "
-                 "[--only K] [--max-ms M] [--crashes DIR]\n";
+    std::cerr << "usage: froth_fuzz <reader: msh> <seed files...> [--iterations N] [--seconds T] "
+                 "[--seed S] [--only K] [--max-ms M] [--crashes DIR]\n";
     std::exit(2);
 }
 
@@ -154,7 +203,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> seeds;
     long long iterations = 10000, only = -1;
     std::uint64_t base = 1;
-    double max_ms = 2000;
+    double max_ms = 2000, budget_s = 600;
     std::string crashes = ".";
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
@@ -162,19 +211,34 @@ int main(int argc, char** argv) {
             if (i + 1 >= argc) usage();
             return std::string(argv[++i]);
         };
-        if (a == "--iterations") iterations = std::stoll(value());
-        else if (a == "--seed") base = std::stoull(value());
-        else if (a == "--only") only = std::stoll(value());
-        else if (a == "--max-ms") max_ms = std::stod(value());
-        else if (a == "--crashes") crashes = value();
-        else seeds.push_back(slurp(a));
+        if (a == "--iterations")
+            iterations = std::stoll(value());
+        else if (a == "--seed")
+            base = std::stoull(value());
+        else if (a == "--only")
+            only = std::stoll(value());
+        else if (a == "--max-ms")
+            max_ms = std::stod(value());
+        else if (a == "--seconds")
+            budget_s = std::stod(value());
+        else if (a == "--crashes")
+            crashes = value();
+        else
+            seeds.push_back(slurp(a));
     }
     if (seeds.empty()) usage();
 
     long long accepted = 0, rejected = 0, slowest_k = -1;
     double slowest = 0;
     const auto start = std::chrono::steady_clock::now();
+    bool out_of_time = false;
     for (long long k = only >= 0 ? only : 0; k < (only >= 0 ? only + 1 : iterations); ++k) {
+        if (k % 256 == 0 &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+                budget_s) {
+            out_of_time = true;
+            break;
+        }
         const std::string input = mutated(seeds[k % seeds.size()], base, k);
         const auto t0 = std::chrono::steady_clock::now();
         std::string outcome;
@@ -185,21 +249,26 @@ int main(int argc, char** argv) {
         } catch (...) {
             outcome = "unexpected non-standard exception";
         }
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
         if (ms > slowest) slowest = ms, slowest_k = k;
         if (outcome != "ok" && outcome != "error") {
-            const std::string path = crashes + "/fuzz_" + reader->name + "_" + std::to_string(k) + ".in";
+            const std::string path =
+                crashes + "/fuzz_" + reader->name + "_" + std::to_string(k) + ".in";
             std::ofstream(path, std::ios::binary) << input;
             std::cerr << "input " << k << ": " << outcome << " (saved as " << path << ")\n";
             return 1;
         }
         (outcome == "ok" ? accepted : rejected) += 1;
     }
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("froth_fuzz %s: %lld inputs from %zu seeds (seed %llu): %lld read, %lld refused "
-                "with a froth error, 0 failures; slowest input %lld: %.1f ms; %.1f s\n",
+                "with a froth error, 0 failures; slowest input %lld: %.1f ms; %.1f s%s\n",
                 reader->name, accepted + rejected, seeds.size(),
-                static_cast<unsigned long long>(base), accepted, rejected, slowest_k, slowest, s);
+                static_cast<unsigned long long>(base), accepted, rejected, slowest_k, slowest, s,
+                out_of_time ? " (stopped by the time budget)" : "");
     if (slowest > max_ms) {
         std::cerr << "input " << slowest_k << " took " << slowest << " ms (limit " << max_ms
                   << " ms): a hang in the making\n";
