@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "core/interrupt.h"
+#include "bindings/paths.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -14,26 +15,9 @@
 namespace froth::lua {
 namespace {
 
-std::string executable_dir() {
-    std::vector<char> buf(4096);
-    const ssize_t n = readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-    if (n <= 0) return "";
-    std::string path(buf.data(), static_cast<std::size_t>(n));
-    return path.substr(0, path.find_last_of('/'));
-}
-
 const GmshBuilders* load() {
-    std::vector<std::string> paths;
-    if (const char* env = std::getenv("FROTH_GMSH_PLUGIN"); env && *env) {
-        paths.push_back(env);
-    } else {
-        if (const std::string dir = executable_dir(); !dir.empty()) paths.push_back(dir + "/libfroth_gmsh.so");
-#ifdef FROTH_GMSH_PLUGIN_PATH
-        paths.push_back(FROTH_GMSH_PLUGIN_PATH);
-#endif
-    }
     std::string tried;
-    for (const std::string& path : paths) {
+    for (const std::string& path : gmsh_plugin_candidates()) {
         void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!handle) {
             tried += "\n  " + path + ": " + dlerror();

@@ -6,7 +6,11 @@
 #include "bindings/lua_walls.h"
 #include "bindings/lua_wulff.h"
 
+#include "bindings/paths.h"
+
 #include <lua.hpp>
+
+#include <unistd.h>
 
 #include <cstdlib>
 #include <string>
@@ -17,11 +21,17 @@ const char* version() { return FROTH_VERSION; }
 
 namespace {
 
-/// Puts froth's own Lua modules first on package.path: $FROTH_LUA_DIR if set, else the source
-/// tree's lua/ folder this binary was built from.
+/// Puts froth's own Lua modules first on package.path: the first of bindings/paths.h's
+/// candidates that holds them (an installed prefix before the source tree), or, if none does,
+/// the first candidate (so that the error for a missing module names where froth looked).
 void add_lua_path(lua_State* L) {
-    const char* env = std::getenv("FROTH_LUA_DIR");
-    const std::string dir = env && *env ? env : FROTH_LUA_DIR;
+    const std::vector<std::string> dirs = lua_dir_candidates();
+    std::string dir = dirs.front();
+    for (const std::string& d : dirs)
+        if (::access((d + "/froth/test.lua").c_str(), R_OK) == 0) {
+            dir = d;
+            break;
+        }
     lua_getglobal(L, "package");
     lua_getfield(L, -1, "path");
     const std::string path = dir + "/?.lua;" + dir + "/?/init.lua;" + lua_tostring(L, -1);
