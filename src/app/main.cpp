@@ -178,30 +178,6 @@ int handle_script(lua_State* L, char** argv) {
     return froth::app::report(L, status, kProgname);
 }
 
-// A fallback help(); the bindings may install a richer one first.
-constexpr const char* kHelp = R"lua(
-return function()
-  print([[
-froth -- surface clusters by parametric FEM (plain Lua 5.4 plus the 'froth' table)
-  c = froth.double_bubble{h = 0.1}         -- two half balls (seed 5.1.1, gmsh)
-  print(c)                                  -- counts; c:energy(), c:volumes()
-  r = c:step{flow = "mcf", tau = 1e-3}      -- one step ("sd": surface diffusion)
-  r = c:evolve{flow = "sd", tau = 1e-3, steps = 100}  -- Ctrl-C stops it between steps
-  froth.<TAB>   c:<TAB>                     -- complete functions and methods
-Full API: docs/lua_api.md.  Examples: datafiles/*.lua (run: froth file.lua).]])
-end
-)lua";
-
-void define_help(lua_State* L) {
-    lua_pushglobaltable(L);
-    const bool defined = lua_getfield(L, -1, "help") != LUA_TNIL;
-    lua_pop(L, 2);
-    if (defined) return;
-    if (luaL_loadbuffer(L, kHelp, std::strlen(kHelp), "=help") != LUA_OK) lua_error(L);
-    lua_call(L, 0, 1);
-    lua_setglobal(L, "help");
-}
-
 // lua.c's pmain, run in protected mode so that every Lua error is caught and reported.
 int pmain(lua_State* L) {
     const int argc = static_cast<int>(lua_tointeger(L, 1));
@@ -230,8 +206,7 @@ int pmain(lua_State* L) {
         lua_setfield(L, LUA_REGISTRYINDEX, "LUA_NOENV");
     }
     luaL_openlibs(L);
-    froth::lua::open_froth(L);
-    define_help(L);
+    froth::lua::open_froth(L); // also the global help (lua/froth/help.lua)
     create_arg_table(L, argv, argc, script);
     if (args & has_W) lua_warning(L, "@on", 0);
     if (!run_args(L, argv, script)) return 0;

@@ -41,6 +41,29 @@ void add_lua_path(lua_State* L) {
     lua_pop(L, 1);
 }
 
+/// froth._manual: the lua_api.md that help() reads (froth.help), nil if none was found;
+/// froth._manual_searched: where froth looked.
+void set_manual(lua_State* L) {
+    std::string searched;
+    for (const std::string& path : manual_candidates()) {
+        searched += (searched.empty() ? "" : ", ") + path;
+        if (::access(path.c_str(), R_OK) == 0) {
+            lua_pushstring(L, path.c_str());
+            lua_setfield(L, -2, "_manual");
+            break;
+        }
+    }
+    lua_pushstring(L, searched.c_str());
+    lua_setfield(L, -2, "_manual_searched");
+}
+
+/// help(topic): lua/froth/help.lua, loaded on first use.
+void define_help(lua_State* L) {
+    constexpr const char* kHelp =
+        "help = function(...) return require('froth.help').help(...) end";
+    if (luaL_dostring(L, kHelp) != LUA_OK) lua_error(L);
+}
+
 } // namespace
 
 void open_froth(lua_State* L) {
@@ -55,12 +78,14 @@ void open_froth(lua_State* L) {
     add_anisotropy_constructors(L);
     lua_pushstring(L, FROTH_VERSION);
     lua_setfield(L, -2, "version");
+    set_manual(L);
     lua_pushvalue(L, -1);
     lua_setglobal(L, "froth");
     luaL_getsubtable(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
     lua_insert(L, -2);
     lua_setfield(L, -2, "froth");
     lua_pop(L, 1);
+    define_help(L);
 }
 
 } // namespace froth::lua

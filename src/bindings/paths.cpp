@@ -36,6 +36,10 @@ std::vector<std::string> lua_dir_candidates() {
     return candidates("FROTH_LUA_DIR", {FROTH_INSTALL_LUA_REL}, FROTH_LUA_DIR);
 }
 
+std::vector<std::string> manual_candidates() {
+    return candidates("FROTH_MANUAL", {FROTH_INSTALL_MANUAL_REL}, FROTH_SOURCE_MANUAL);
+}
+
 std::vector<std::string> gmsh_plugin_candidates() {
     return candidates("FROTH_GMSH_PLUGIN", {"libfroth_gmsh.so", FROTH_INSTALL_PLUGIN_REL},
                       FROTH_GMSH_PLUGIN_PATH);

@@ -19,4 +19,8 @@ std::vector<std::string> lua_dir_candidates();
 /// executable (the build tree), <exe>/../lib/froth (an installed prefix), the build tree.
 std::vector<std::string> gmsh_plugin_candidates();
 
+/// Candidates for the manual lua_api.md that help() prints from: <exe>/../share/doc/froth
+/// (an installed prefix), then the source tree's docs/.
+std::vector<std::string> manual_candidates();
+
 } // namespace froth::lua

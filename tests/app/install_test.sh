@@ -26,11 +26,15 @@ out=$(env -u FROTH_LUA_DIR -u FROTH_GMSH_PLUGIN -u FROTH_DATAFILES "$P/bin/froth
   print(where)
   print(type(froth.box_cells))
   if froth.has("gmsh") then print(froth.torus_bubble ~= nil, froth.double_bubble{h = 0.3}:info().bodies) end
+  print("manual " .. tostring(froth._manual))
+  help("evolve")
 ' 2>&1)
 rc=$?
 [[ $rc == 0 ]] || fail "moved froth failed (rc $rc): $out"
 grep -q "^$P/share/froth/lua/froth/test.lua$" <<<"$out" || fail "Lua library not from the prefix: $out"
 grep -q "^function$" <<<"$out" || fail "froth.box_cells missing: $out"
+grep -q "^manual $P/share/doc/froth/lua_api.md$" <<<"$out" || fail "manual not from the prefix: $out"
+grep -q "^### c:evolve{" <<<"$out" || fail "help('evolve') from the moved prefix: $out"
 if "$P/bin/froth" -e 'os.exit(froth.has("gmsh") and 0 or 1)'; then
   grep -q "^true	2$" <<<"$out" || fail "gmsh builders from the prefix: $out"
   [[ -f $(ls "$P"/lib*/froth/libfroth_gmsh.so "$P"/lib/*/froth/libfroth_gmsh.so 2>/dev/null | head -1) ]] ||
