@@ -351,11 +351,38 @@ int load_line(lua_State* L) {
     }
 }
 
+// Replaces each table result by its readable text (lua/froth/pretty.lua: reports and results
+// print as {energy = ..., volumes = {...}}, not "table: 0x..."); without the module, as is.
+void prettify_tables(lua_State* L, int base) {
+    bool any = false;
+    for (int i = base + 1; i <= lua_gettop(L); ++i) any = any || lua_type(L, i) == LUA_TTABLE;
+    if (!any) return;
+    lua_getglobal(L, "require");
+    lua_pushstring(L, "froth.pretty");
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK || !lua_istable(L, -1)) {
+        lua_pop(L, 1);
+        return;
+    }
+    lua_getfield(L, -1, "format");
+    const int format = lua_gettop(L);
+    for (int i = base + 1; i < format - 1; ++i) {
+        if (lua_type(L, i) != LUA_TTABLE) continue;
+        lua_pushvalue(L, format);
+        lua_pushvalue(L, i);
+        if (lua_pcall(L, 1, 1, 0) == LUA_OK && lua_type(L, -1) == LUA_TSTRING)
+            lua_replace(L, i);
+        else
+            lua_pop(L, 1);
+    }
+    lua_pop(L, 2);
+}
+
 // lua.c's l_print: results go through the global print, so __tostring and overrides apply.
 void print_results(lua_State* L, int base) {
     const int n = lua_gettop(L) - base;
     if (n <= 0) return;
     luaL_checkstack(L, LUA_MINSTACK, "too many results to print");
+    prettify_tables(L, base);
     lua_getglobal(L, "print");
     lua_insert(L, base + 1);
     if (lua_pcall(L, n, 0, 0) != LUA_OK)
