@@ -4,6 +4,7 @@
 
 #include "bindings/lua_anisotropy.h"
 #include "bindings/luax.h"
+#include "bindings/lua_queries.h"
 #include "bindings/lua_statics.h"
 #include "bindings/lua_walls.h"
 #include "io/write.h"
@@ -517,6 +518,7 @@ void register_cluster_type(lua_State* L) {
     luaL_getmetatable(L, kClusterType);
     lua_getfield(L, -1, "__index");
     add_statics_methods(L);
+    add_query_methods(L);
     lua_pop(L, 2);
 }
 

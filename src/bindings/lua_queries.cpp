@@ -1,0 +1,190 @@
+// froth.Cluster queries and edits (issue 14, item 4): c:vertices{where}, c:facets{where},
+// c:edges{where} list elements with their attributes, filtered by a Lua predicate, as Evolver's
+// `list vertex where ...`; c:set_vertex moves one vertex. Ids are 1-based here.
+#include "bindings/lua_queries.h"
+
+#include "bindings/lua_cluster.h"
+#include "bindings/luax.h"
+#include "core/errors.h"
+#include "geometry/geometry.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace froth::lua {
+namespace {
+
+ClusterHandle& self(lua_State* L) { return check_cluster(L, 1); }
+
+void push_vec(lua_State* L, const Vec3& x) { push_numbers(L, std::vector<double>{x[0], x[1], x[2]}); }
+
+void set_bool(lua_State* L, const char* key, bool value) {
+    lua_pushboolean(L, value);
+    lua_setfield(L, -2, key);
+}
+
+/// The bodies (0-based) each surface bounds.
+std::vector<std::vector<int>> bodies_of_surfaces(const Cluster& c) {
+    std::vector<std::vector<int>> r(c.n_surfaces());
+    for (int b = 0; b < c.n_bodies(); ++b)
+        for (const BodyFace& f : c.bodies()[b].faces) r[f.surface].push_back(b);
+    return r;
+}
+
+/// Reads {where = f} (optional) and returns the stack index of f, or 0.
+int read_where(lua_State* L, const char* op) {
+    Options o(L, 2, op, true);
+    const int t = o.push("where");
+    if (t != LUA_TNIL && t != LUA_TFUNCTION) o.error("where", "must be a function (record) -> boolean");
+    o.finish();
+    return t == LUA_TFUNCTION ? lua_gettop(L) : 0;
+}
+
+/// With the record on top of the stack: appends it to the result table at `out` if where(record)
+/// is true (or there is no where), else drops it. Errors in where propagate with their message.
+void keep_if(lua_State* L, int where, int out, int& n) {
+    if (where) {
+        lua_pushvalue(L, where);
+        lua_pushvalue(L, -2);
+        lua_call(L, 1, 1);
+        const bool keep = lua_toboolean(L, -1);
+        lua_pop(L, 1);
+        if (!keep) {
+            lua_pop(L, 1);
+            return;
+        }
+    }
+    lua_rawseti(L, out, ++n);
+}
+
+int l_vertices(lua_State* L) {
+    ClusterHandle& h = self(L);
+    const Cluster& c = h.cluster;
+    const int where = read_where(L, "vertices");
+    const std::vector<std::vector<int>> body_of = bodies_of_surfaces(c);
+    std::vector<char> on_line(c.n_vertices(), 0), quadruple(c.n_vertices(), 0);
+    for (const JunctionEdge& e : c.junction_edges()) on_line[e.a] = on_line[e.b] = 1;
+    for (int q : c.quadruple_points()) quadruple[q] = 1;
+    lua_newtable(L);
+    const int out = lua_gettop(L);
+    int n = 0;
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        lua_createtable(L, 0, 7);
+        set_integer(L, "id", v + 1);
+        push_vec(L, c.position(v));
+        lua_setfield(L, -2, "x");
+        std::vector<int> surfaces, bodies;
+        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) {
+            surfaces.push_back(c.pair_surface(k));
+            for (int b : body_of[c.pair_surface(k)]) bodies.push_back(b);
+        }
+        std::sort(bodies.begin(), bodies.end());
+        bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+        push_integers(L, surfaces, 1);
+        lua_setfield(L, -2, "surfaces");
+        push_integers(L, bodies, 1);
+        lua_setfield(L, -2, "bodies");
+        push_integers(L, c.vertex_walls(v), 1);
+        lua_setfield(L, -2, "walls");
+        set_bool(L, "triple_line", on_line[v]);
+        set_bool(L, "quadruple_point", quadruple[v]);
+        keep_if(L, where, out, n);
+    }
+    return 1;
+}
+
+int l_facets(lua_State* L) {
+    ClusterHandle& h = self(L);
+    const Cluster& c = h.cluster;
+    const int where = read_where(L, "facets");
+    const std::vector<std::vector<int>> body_of = bodies_of_surfaces(c);
+    lua_newtable(L);
+    const int out = lua_gettop(L);
+    int n = 0, id = 0;
+    for (int s = 0; s < c.n_surfaces(); ++s)
+        for (const Tri& t : c.surface(s).triangles) {
+            const Vec3 cross = (c.position(t[1]) - c.position(t[0])).cross(c.position(t[2]) - c.position(t[0]));
+            lua_createtable(L, 0, 6);
+            set_integer(L, "id", ++id);
+            set_integer(L, "surface", s + 1);
+            push_integers(L, t, 1);
+            lua_setfield(L, -2, "vertices");
+            set_number(L, "area", 0.5 * cross.norm());
+            push_vec(L, cross.normalized());
+            lua_setfield(L, -2, "normal");
+            push_integers(L, body_of[s], 1);
+            lua_setfield(L, -2, "bodies");
+            keep_if(L, where, out, n);
+        }
+    return 1;
+}
+
+int l_edges(lua_State* L) {
+    ClusterHandle& h = self(L);
+    const Cluster& c = h.cluster;
+    const int where = read_where(L, "edges");
+    std::map<std::pair<int, int>, std::vector<int>> surfaces_of; // sorted: a stable order
+    for (int s = 0; s < c.n_surfaces(); ++s)
+        for (const Tri& t : c.surface(s).triangles)
+            for (int k = 0; k < 3; ++k) {
+                std::vector<int>& list = surfaces_of[std::minmax(t[k], t[(k + 1) % 3])];
+                if (std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
+            }
+    std::map<std::pair<int, int>, int> facets_of;
+    for (int s = 0; s < c.n_surfaces(); ++s)
+        for (const Tri& t : c.surface(s).triangles)
+            for (int k = 0; k < 3; ++k) ++facets_of[std::minmax(t[k], t[(k + 1) % 3])];
+    lua_newtable(L);
+    const int out = lua_gettop(L);
+    int n = 0, id = 0;
+    for (auto& [edge, surfaces] : surfaces_of) {
+        std::sort(surfaces.begin(), surfaces.end());
+        lua_createtable(L, 0, 6);
+        set_integer(L, "id", ++id);
+        push_integers(L, std::vector<int>{edge.first, edge.second}, 1);
+        lua_setfield(L, -2, "vertices");
+        set_number(L, "length", (c.position(edge.first) - c.position(edge.second)).norm());
+        push_integers(L, surfaces, 1);
+        lua_setfield(L, -2, "surfaces");
+        set_bool(L, "triple_line", surfaces.size() == 3);
+        set_bool(L, "boundary", facets_of[edge] == 1); // a free boundary edge: on a wall
+        keep_if(L, where, out, n);
+    }
+    return 1;
+}
+
+/// c:set_vertex(v, {x, y, z}): moves vertex v; refused (nothing changes) if a facet at v would
+/// lose its area or the point is not finite.
+int l_set_vertex(lua_State* L) {
+    ClusterHandle& h = self(L);
+    ChangeGuard change(L, h, "set_vertex");
+    Cluster& c = h.cluster;
+    const int v = check_id(L, 2, c.n_vertices(), "vertex", "vertices");
+    const Vec3 x = read_xyz(L, 3, "set_vertex: expected a point {x, y, z}");
+    return guarded(L, [&] {
+        if (!x.allFinite() || x.cwiseAbs().maxCoeff() > kMaxCoordinate)
+            throw InvalidInput("set_vertex: vertex " + std::to_string(v + 1) +
+                               ": the point must be finite and at most 1e100 in magnitude");
+        std::vector<Vec3> X = c.positions();
+        X[v] = x;
+        if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
+            throw GeometryError("set_vertex: moving vertex " + std::to_string(v + 1) +
+                                " there gives facet " + std::to_string(f + 1) + " of surface " +
+                                std::to_string(s + 1) + " zero area; nothing changed");
+        c.set_positions(std::move(X));
+        return 0;
+    });
+}
+
+const luaL_Reg methods[] = {
+    {"vertices", l_vertices}, {"facets", l_facets}, {"edges", l_edges},
+    {"set_vertex", l_set_vertex}, {nullptr, nullptr},
+};
+
+} // namespace
+
+void add_query_methods(lua_State* L) { luaL_setfuncs(L, methods, 0); }
+
+} // namespace froth::lua

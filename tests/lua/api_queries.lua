@@ -1,0 +1,61 @@
+-- c:vertices{where}, c:facets{where}, c:edges{where}, c:set_vertex: attributes checked against
+-- invariants of the two-cell box cluster (exact combinatorics, no gmsh).
+local T = require("froth.test")
+local c = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
+local info = c:info()
+
+local V = c:vertices()
+T.assert_equal(#V, info.vertices, "every vertex listed")
+for i, v in ipairs(V) do
+  T.assert_equal(v.id, i, "vertex ids in order")
+  local x = c:vertex(i)
+  T.assert_true(v.x[1] == x[1] and v.x[2] == x[2] and v.x[3] == x[3], "vertex position")
+end
+local line = c:vertices{where = function(v) return v.triple_line end}
+T.assert_equal(#line, #c:triple_lines()[1].vertices, "triple-line vertices are the line's")
+for _, v in ipairs(line) do
+  T.assert_equal(#v.surfaces, 3, "a line vertex is on three surfaces")
+  T.assert_equal(#v.bodies, 2, "and on both bodies")
+  T.assert_equal(v.x[1], 1, "the line lies in the shared wall x = 1")
+end
+T.assert_equal(#c:vertices{where = function(v) return v.quadruple_point end}, 0, "no quadruple points")
+
+local F = c:facets()
+T.assert_equal(#F, info.facets, "every facet listed")
+local area, shared = 0, 0
+for _, f in ipairs(F) do
+  area = area + f.area
+  T.assert_near(math.sqrt(f.normal[1] ^ 2 + f.normal[2] ^ 2 + f.normal[3] ^ 2), 1, 1e-15, "unit normal")
+  if #f.bodies == 2 then shared = shared + f.area end
+end
+T.assert_near(area, c:area(), 1e-14, "facet areas sum to the area")
+T.assert_near(shared, 1, 1e-15, "the shared wall (in both bodies) has area 1")
+
+local E = c:edges()
+local triple = c:edges{where = function(e) return e.triple_line end}
+T.assert_equal(#triple, 4, "the triple line has 4 edges")
+T.assert_equal(#E, (3 * info.facets - #triple) // 2, "3F = 2E + (triple edges): every edge listed once")
+T.assert_equal(#c:edges{where = function(e) return e.boundary end}, 0, "closed cells: no free boundary edges")
+local long = 0
+for _, e in ipairs(E) do long = math.max(long, e.length) end
+T.assert_near(long, 1, 1e-15, "the longest edges are the unit lattice edges")
+
+-- errors
+T.check_error("vertices: option 'where' must be a function", c.vertices, c, {where = 3})
+T.check_error("facets: unknown option 'wher'", c.facets, c, {wher = print})
+T.check_error("boom", c.edges, c, {where = function() error("boom") end})
+
+-- set_vertex
+local E0 = c:energy()
+c:set_vertex(1, {-0.1, 0, 0})
+T.assert_equal(c:vertex(1)[1], -0.1, "set_vertex moves the vertex")
+T.assert_true(c:energy() ~= E0, "and the energy follows")
+local before = c:vertex(1)
+T.check_error("set_vertex: vertex 1: the point must be finite", c.set_vertex, c, 1, {0 / 0, 0, 0})
+T.check_error("vertex 99 does not exist", c.set_vertex, c, 99, {0, 0, 0})
+local far = c:vertex(7) -- move vertex 6 onto a neighbour: some facet collapses
+T.check_error("zero area; nothing changed", c.set_vertex, c, 6, far)
+T.assert_equal(c:vertex(1)[1], before[1], "a refused set_vertex changes nothing")
+T.check_error("set_vertex: the cluster is busy", c.evolve, c,
+              {flow = "mcf", tau = 1e-3, steps = 1, on_step = function() c:set_vertex(1, {0, 0, 0}) end})
+T.summary()
