@@ -60,6 +60,32 @@ int l_pressures(lua_State* L) {
     });
 }
 
+/// c:body_report() -> {{body, volume, target, pressure, surfaces}, ...}: Evolver's `v`.
+int l_body_report(lua_State* L) {
+    ClusterHandle& h = self(L);
+    const Cluster& c = h.cluster;
+    QueryGuard query(h);
+    return guarded(L, [&] {
+        const std::vector<double> volumes = body_volumes(c);
+        const std::vector<double> pressures =
+            c.n_bodies() > 0 ? equilibrium_state(c).pressures : std::vector<double>{};
+        lua_createtable(L, c.n_bodies(), 0);
+        for (int b = 0; b < c.n_bodies(); ++b) {
+            lua_createtable(L, 0, 5);
+            set_integer(L, "body", b + 1);
+            set_number(L, "volume", volumes[b]);
+            set_number(L, "target", c.target_volumes()[b]);
+            set_number(L, "pressure", pressures[b]);
+            std::vector<int> surfaces;
+            for (const BodyFace& f : c.bodies()[b].faces) surfaces.push_back(f.sign * (f.surface + 1));
+            push_integers(L, surfaces);
+            lua_setfield(L, -2, "surfaces");
+            lua_rawseti(L, -2, b + 1);
+        }
+        return 1;
+    });
+}
+
 /// c:set_volume(body, v)
 int l_set_volume(lua_State* L) {
     ClusterHandle& h = self(L);
@@ -107,6 +133,7 @@ const luaL_Reg methods[] = {
     {"refine", l_refine},
     {"minimize", l_minimize},
     {"pressures", l_pressures},
+    {"body_report", l_body_report},
     {"set_volume", l_set_volume},
     {"target_volumes", l_target_volumes},
     {nullptr, nullptr},

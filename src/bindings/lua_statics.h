@@ -1,6 +1,6 @@
 #pragma once
-/// froth.Cluster methods for statics: c:minimize, c:pressures, c:set_volume, c:target_volumes,
-/// c:refine (the engine's flows/minimize.h and refine in mesh/cluster.h).
+/// froth.Cluster methods for statics: c:minimize, c:pressures, c:body_report, c:set_volume,
+/// c:target_volumes, c:refine (the engine's flows/minimize.h and refine in mesh/cluster.h).
 
 struct lua_State;
 

@@ -58,4 +58,21 @@ T.check_error("zero area; nothing changed", c.set_vertex, c, 6, far)
 T.assert_equal(c:vertex(1)[1], before[1], "a refused set_vertex changes nothing")
 T.check_error("set_vertex: the cluster is busy", c.evolve, c,
               {flow = "mcf", tau = 1e-3, steps = 1, on_step = function() c:set_vertex(1, {0, 0, 0}) end})
+-- c:body_report(): Evolver's `v`
+local b = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
+b:set_volume(2, 1.5)
+b:minimize{}
+local rep, p = b:body_report(), b:pressures()
+T.assert_equal(#rep, 2, "one row per body")
+for i, row in ipairs(rep) do
+  T.assert_equal(row.body, i, "body id")
+  T.assert_equal(row.pressure, p[i], "the pressure is c:pressures()'s")
+  T.assert_equal(row.target, b:target_volumes()[i], "target volume")
+  T.assert_near(row.volume, row.target, 1e-12 * row.target, "at its target after minimize")
+  T.assert_equal(table.concat(row.surfaces, " "), table.concat(b:bodies()[i], " "), "signed surfaces")
+end
+T.assert_true(rep[1].pressure > rep[2].pressure, "the smaller cell has the larger pressure")
+local tet = froth.cluster{vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                          surfaces = {{{1, 3, 2}, {1, 2, 4}, {2, 3, 4}, {1, 4, 3}}}}
+T.assert_equal(#tet:body_report(), 0, "no bodies, no rows")
 T.summary()
