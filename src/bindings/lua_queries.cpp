@@ -16,9 +16,13 @@
 namespace froth::lua {
 namespace {
 
-ClusterHandle& self(lua_State* L) { return check_cluster(L, 1); }
+ClusterHandle& self(lua_State* L) {
+    return check_cluster(L, 1);
+}
 
-void push_vec(lua_State* L, const Vec3& x) { push_numbers(L, std::vector<double>{x[0], x[1], x[2]}); }
+void push_vec(lua_State* L, const Vec3& x) {
+    push_numbers(L, std::vector<double>{x[0], x[1], x[2]});
+}
 
 void set_bool(lua_State* L, const char* key, bool value) {
     lua_pushboolean(L, value);
@@ -29,7 +33,8 @@ void set_bool(lua_State* L, const char* key, bool value) {
 std::vector<std::vector<int>> bodies_of_surfaces(const Cluster& c) {
     std::vector<std::vector<int>> r(c.n_surfaces());
     for (int b = 0; b < c.n_bodies(); ++b)
-        for (const BodyFace& f : c.bodies()[b].faces) r[f.surface].push_back(b);
+        for (const BodyFace& f : c.bodies()[b].faces)
+            r[f.surface].push_back(b);
     return r;
 }
 
@@ -37,7 +42,8 @@ std::vector<std::vector<int>> bodies_of_surfaces(const Cluster& c) {
 int read_where(lua_State* L, const char* op) {
     Options o(L, 2, op, true);
     const int t = o.push("where");
-    if (t != LUA_TNIL && t != LUA_TFUNCTION) o.error("where", "must be a function (record) -> boolean");
+    if (t != LUA_TNIL && t != LUA_TFUNCTION)
+        o.error("where", "must be a function (record) -> boolean");
     o.finish();
     return t == LUA_TFUNCTION ? lua_gettop(L) : 0;
 }
@@ -65,8 +71,10 @@ int l_vertices(lua_State* L) {
     const int where = read_where(L, "vertices");
     const std::vector<std::vector<int>> body_of = bodies_of_surfaces(c);
     std::vector<char> on_line(c.n_vertices(), 0), quadruple(c.n_vertices(), 0);
-    for (const JunctionEdge& e : c.junction_edges()) on_line[e.a] = on_line[e.b] = 1;
-    for (int q : c.quadruple_points()) quadruple[q] = 1;
+    for (const JunctionEdge& e : c.junction_edges())
+        on_line[e.a] = on_line[e.b] = 1;
+    for (int q : c.quadruple_points())
+        quadruple[q] = 1;
     lua_newtable(L);
     const int out = lua_gettop(L);
     int n = 0;
@@ -78,16 +86,14 @@ int l_vertices(lua_State* L) {
         std::vector<int> surfaces, bodies;
         for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) {
             surfaces.push_back(c.pair_surface(k));
-            for (int b : body_of[c.pair_surface(k)]) bodies.push_back(b);
+            for (int b : body_of[c.pair_surface(k)])
+                bodies.push_back(b);
         }
         std::sort(bodies.begin(), bodies.end());
         bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
-        push_integers(L, surfaces, 1);
-        lua_setfield(L, -2, "surfaces");
-        push_integers(L, bodies, 1);
-        lua_setfield(L, -2, "bodies");
-        push_integers(L, c.vertex_walls(v), 1);
-        lua_setfield(L, -2, "walls");
+        set_integers(L, "surfaces", surfaces, 1);
+        set_integers(L, "bodies", bodies, 1);
+        set_integers(L, "walls", c.vertex_walls(v), 1);
         set_bool(L, "triple_line", on_line[v]);
         set_bool(L, "quadruple_point", quadruple[v]);
         keep_if(L, where, out, n);
@@ -105,17 +111,16 @@ int l_facets(lua_State* L) {
     int n = 0, id = 0;
     for (int s = 0; s < c.n_surfaces(); ++s)
         for (const Tri& t : c.surface(s).triangles) {
-            const Vec3 cross = (c.position(t[1]) - c.position(t[0])).cross(c.position(t[2]) - c.position(t[0]));
+            const Vec3 cross =
+                (c.position(t[1]) - c.position(t[0])).cross(c.position(t[2]) - c.position(t[0]));
             lua_createtable(L, 0, 6);
             set_integer(L, "id", ++id);
             set_integer(L, "surface", s + 1);
-            push_integers(L, t, 1);
-            lua_setfield(L, -2, "vertices");
+            set_integers(L, "vertices", t, 1);
             set_number(L, "area", 0.5 * cross.norm());
             push_vec(L, cross.normalized());
             lua_setfield(L, -2, "normal");
-            push_integers(L, body_of[s], 1);
-            lua_setfield(L, -2, "bodies");
+            set_integers(L, "bodies", body_of[s], 1);
             keep_if(L, where, out, n);
         }
     return 1;
@@ -125,31 +130,30 @@ int l_edges(lua_State* L) {
     ClusterHandle& h = self(L);
     const Cluster& c = h.cluster;
     const int where = read_where(L, "edges");
-    std::map<std::pair<int, int>, std::vector<int>> surfaces_of; // sorted: a stable order
+    struct Incidence {
+        std::vector<int> surfaces; // in increasing order: surfaces are visited in order
+        int facets = 0;
+    };
+    std::map<std::pair<int, int>, Incidence> edges; // sorted by vertex pair: a stable order
     for (int s = 0; s < c.n_surfaces(); ++s)
         for (const Tri& t : c.surface(s).triangles)
             for (int k = 0; k < 3; ++k) {
-                std::vector<int>& list = surfaces_of[std::minmax(t[k], t[(k + 1) % 3])];
-                if (std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
+                Incidence& e = edges[std::minmax(t[k], t[(k + 1) % 3])];
+                if (e.surfaces.empty() || e.surfaces.back() != s) e.surfaces.push_back(s);
+                ++e.facets;
             }
-    std::map<std::pair<int, int>, int> facets_of;
-    for (int s = 0; s < c.n_surfaces(); ++s)
-        for (const Tri& t : c.surface(s).triangles)
-            for (int k = 0; k < 3; ++k) ++facets_of[std::minmax(t[k], t[(k + 1) % 3])];
     lua_newtable(L);
     const int out = lua_gettop(L);
     int n = 0, id = 0;
-    for (auto& [edge, surfaces] : surfaces_of) {
-        std::sort(surfaces.begin(), surfaces.end());
+    for (const auto& [edge, incidence] : edges) {
+        const std::vector<int>& surfaces = incidence.surfaces;
         lua_createtable(L, 0, 6);
         set_integer(L, "id", ++id);
-        push_integers(L, std::vector<int>{edge.first, edge.second}, 1);
-        lua_setfield(L, -2, "vertices");
+        set_integers(L, "vertices", std::vector<int>{edge.first, edge.second}, 1);
         set_number(L, "length", (c.position(edge.first) - c.position(edge.second)).norm());
-        push_integers(L, surfaces, 1);
-        lua_setfield(L, -2, "surfaces");
+        set_integers(L, "surfaces", surfaces, 1);
         set_bool(L, "triple_line", surfaces.size() == 3);
-        set_bool(L, "boundary", facets_of[edge] == 1); // a free boundary edge: on a wall
+        set_bool(L, "boundary", incidence.facets == 1); // a free boundary edge: on a wall
         keep_if(L, where, out, n);
     }
     return 1;
@@ -179,12 +183,14 @@ int l_set_vertex(lua_State* L) {
 }
 
 const luaL_Reg methods[] = {
-    {"vertices", l_vertices}, {"facets", l_facets}, {"edges", l_edges},
+    {"vertices", l_vertices},     {"facets", l_facets}, {"edges", l_edges},
     {"set_vertex", l_set_vertex}, {nullptr, nullptr},
 };
 
 } // namespace
 
-void add_query_methods(lua_State* L) { luaL_setfuncs(L, methods, 0); }
+void add_query_methods(lua_State* L) {
+    luaL_setfuncs(L, methods, 0);
+}
 
 } // namespace froth::lua

@@ -148,6 +148,13 @@ int check_id(lua_State* L, int idx, int n, const char* kind, const char* kinds);
 /// missing or non-number entry raises `message` (e.g. "expected a point {x, y, z}").
 Eigen::Vector3d read_xyz(lua_State* L, int idx, const char* message);
 
+/// t[key] = an array of integers plus offset (1 turns 0-based ids into Lua ids).
+template <class Range>
+void set_integers(lua_State* L, const char* key, const Range& values, long long offset = 0) {
+    push_integers(L, values, offset);
+    lua_setfield(L, -2, key);
+}
+
 inline void set_number(lua_State* L, const char* key, double value) {
     lua_pushnumber(L, value);
     lua_setfield(L, -2, key);

@@ -54,10 +54,8 @@ template <class E, class F> auto in_session(const std::string& prefix, F&& body)
         throw;
     } catch (const std::string& s) {
         throw E(prefix + s);
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) { // anything else (a Lua error) passes through
         throw E(prefix + e.what());
-    } catch (...) { // safe: no Lua code runs inside a gmsh session
-        throw E(prefix + "unknown gmsh error");
     }
 }
 

@@ -174,9 +174,7 @@ void write_all(int fd, const std::string& bytes) {
         message = encode_error(kSolver, e.what());
     } catch (const std::exception& e) {
         message = encode_error(kOther, e.what());
-    } catch (...) {
-        message = encode_error(kOther, "unknown error while meshing");
-    }
+    } // anything else ends the child in std::terminate, which the parent reports as a signal
     write_all(fd, message);
     ::close(fd);
     ::_exit(0);
@@ -231,14 +229,11 @@ ClusterSpec run_isolated(const std::string& op, const std::function<ClusterSpec(
         child(fds[1], build);
     }
     ::close(fds[1]);
-    std::string bytes;
-    try {
-        bytes = receive(fds[0], pid, op);
-    } catch (...) {
-        ::close(fds[0]);
-        throw;
-    }
-    ::close(fds[0]);
+    struct Closer { // the read end, also when receive throws (Ctrl-C)
+        int fd;
+        ~Closer() { ::close(fd); }
+    } read_end{fds[0]};
+    const std::string bytes = receive(read_end.fd, pid, op);
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }

@@ -62,22 +62,21 @@ std::vector<double> body_volumes(const Cluster& c, const std::vector<Vec3>& X) {
     return volumes;
 }
 
+namespace {
+double max_relative_deviation(const std::vector<double>& volumes, const std::vector<double>& ref) {
+    double e = 0;
+    for (std::size_t b = 0; b < volumes.size(); ++b)
+        e = std::max(e, std::abs(volumes[b] - ref[b]) / ref[b]);
+    return e;
+}
+} // namespace
+
 double max_volume_loss(const Cluster& c, const std::vector<double>& volumes) {
-    double loss = 0;
-    for (std::size_t b = 0; b < volumes.size(); ++b) {
-        const double v0 = c.initial_volumes()[b];
-        loss = std::max(loss, std::abs(volumes[b] - v0) / v0);
-    }
-    return loss;
+    return max_relative_deviation(volumes, c.initial_volumes());
 }
 
 double max_target_deviation(const Cluster& c, const std::vector<double>& volumes) {
-    double e = 0;
-    for (std::size_t b = 0; b < volumes.size(); ++b) {
-        const double target = c.target_volumes()[b];
-        e = std::max(e, std::abs(volumes[b] - target) / target);
-    }
-    return e;
+    return max_relative_deviation(volumes, c.target_volumes());
 }
 
 namespace {

@@ -30,7 +30,6 @@ struct MshModel {
     std::map<int, std::vector<int>> surface_physicals; ///< surface entity -> physical tags
     std::map<int, std::vector<int>> volume_physicals;  ///< volume entity -> physical tags
     std::map<int, std::vector<int>> volume_boundaries; ///< volume entity -> surface entities
-    bool has_volume_entities = false;
 };
 
 /// Tokens of the file, with the line they are on for messages. Counts read from the file are
@@ -131,6 +130,15 @@ int nodes_of_type(int type) {
 }
 constexpr int kTriangle = 2;
 
+/// An element type and its number of nodes; unknown types are refused.
+std::pair<int, int> read_element_type(Tokens& t) {
+    const int type = t.tag("element type");
+    const int per = nodes_of_type(type);
+    if (per == 0)
+        t.fail("element type " + std::to_string(type) + " is not a gmsh element type froth knows");
+    return {type, per};
+}
+
 void read_tags(Tokens& t, std::vector<int>& into, const char* what) {
     const std::size_t n = t.count(what, 1);
     for (std::size_t i = 0; i < n; ++i)
@@ -160,7 +168,6 @@ void read_entities(Tokens& t, MshModel& m) {
             read_tags(t, boundary, "number of bounding entities");
             if (dim == 2) m.surface_physicals[tag] = std::move(physicals);
             if (dim == 3) {
-                m.has_volume_entities = true;
                 m.volume_physicals[tag] = std::move(physicals);
                 for (int& b : boundary)
                     b = std::abs(b);
@@ -170,11 +177,21 @@ void read_entities(Tokens& t, MshModel& m) {
     t.expect("$EndEntities");
 }
 
+/// The first line of $Nodes and $Elements in 4.1: numBlocks numItems minTag maxTag.
+struct BlockHeader {
+    std::size_t blocks, total;
+};
+BlockHeader read_block_header(Tokens& t, const char* items, int tokens_per_item) {
+    const std::string what(items);
+    BlockHeader h{t.count(("number of " + what + " blocks").c_str(), 4),
+                  t.count(("number of " + what + "s").c_str(), tokens_per_item)};
+    t.integer(("minimum " + what + " tag").c_str(), 0, std::numeric_limits<long long>::max());
+    t.integer(("maximum " + what + " tag").c_str(), 0, std::numeric_limits<long long>::max());
+    return h;
+}
+
 void read_nodes_41(Tokens& t, MshModel& m) {
-    const std::size_t blocks = t.count("number of node blocks", 4);
-    const std::size_t total = t.count("number of nodes", 4);
-    t.integer("minimum node tag", 0, std::numeric_limits<long long>::max());
-    t.integer("maximum node tag", 0, std::numeric_limits<long long>::max());
+    const auto [blocks, total] = read_block_header(t, "node", 4);
     m.nodes.reserve(total);
     for (std::size_t b = 0; b < blocks; ++b) {
         const int dim = static_cast<int>(t.integer("entity dimension", 0, 3));
@@ -204,19 +221,12 @@ void read_nodes_41(Tokens& t, MshModel& m) {
 }
 
 void read_elements_41(Tokens& t, MshModel& m) {
-    const std::size_t blocks = t.count("number of element blocks", 4);
-    const std::size_t total = t.count("number of elements", 2);
-    t.integer("minimum element tag", 0, std::numeric_limits<long long>::max());
-    t.integer("maximum element tag", 0, std::numeric_limits<long long>::max());
+    const auto [blocks, total] = read_block_header(t, "element", 2);
     std::size_t seen = 0;
     for (std::size_t b = 0; b < blocks; ++b) {
         const int dim = static_cast<int>(t.integer("entity dimension", 0, 3));
         const int entity = t.tag("entity tag");
-        const int type = t.tag("element type");
-        const int per = nodes_of_type(type);
-        if (per == 0)
-            t.fail("element type " + std::to_string(type) +
-                   " is not a gmsh element type froth knows");
+        const auto [type, per] = read_element_type(t);
         const std::size_t n = t.count("number of elements in block", per + 1);
         seen += n;
         if (seen > total)
@@ -260,11 +270,7 @@ void read_elements_22(Tokens& t, MshModel& m) {
     const std::size_t n = t.count("number of elements", 4);
     for (std::size_t i = 0; i < n; ++i) {
         t.integer("element tag", 0, std::numeric_limits<long long>::max());
-        const int type = t.tag("element type");
-        const int per = nodes_of_type(type);
-        if (per == 0)
-            t.fail("element type " + std::to_string(type) +
-                   " is not a gmsh element type froth knows");
+        const auto [type, per] = read_element_type(t);
         const int ntags = static_cast<int>(t.integer("number of element tags", 0, 64));
         int physical = 0, entity = 0;
         for (int k = 0; k < ntags; ++k) {
