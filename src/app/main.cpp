@@ -11,6 +11,7 @@
 #include <cstring>
 #include <string>
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <lua.hpp>
@@ -21,6 +22,37 @@
 namespace {
 
 constexpr const char* kProgname = "froth";
+
+// OpenBLAS (Debian's pthread build, CHOLMOD's BLAS) starts a worker thread per CPU in its own
+// constructor, before main, and the workers spin in sched_yield for about 0.1 s even after the
+// solvers ask for one thread (solvers/sparse_solvers.cpp): 12% of a short run's wall time and
+// half its system time (docs/benchmarks.md, "Statics"). Its constructor counts the CPUs of the
+// process's affinity mask; environment variables cannot be set this early (glibc's getenv and
+// setenv work only from the libraries' constructors on). So the executable's .preinit_array,
+// which runs before every library constructor, narrows the mask to one CPU, and main()
+// restores it. Not done when the user chose thread counts (OPENBLAS_NUM_THREADS,
+// GOTO_NUM_THREADS, OMP_NUM_THREADS), which OpenBLAS would otherwise cap at the one CPU.
+cpu_set_t g_cpus;
+bool g_narrowed = false;
+bool chooses_threads(char** envp) {
+    for (char** e = envp; e != nullptr && *e != nullptr; ++e)
+        for (const char* name : {"OPENBLAS_NUM_THREADS=", "GOTO_NUM_THREADS=", "OMP_NUM_THREADS="})
+            if (std::strncmp(*e, name, std::strlen(name)) == 0) return true;
+    return false;
+}
+void start_blas_single_threaded(int, char**, char** envp) {
+    if (chooses_threads(envp) || sched_getaffinity(0, sizeof g_cpus, &g_cpus) != 0) return;
+    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+        if (CPU_ISSET(cpu, &g_cpus)) {
+            cpu_set_t one;
+            CPU_ZERO(&one);
+            CPU_SET(cpu, &one);
+            g_narrowed = sched_setaffinity(0, sizeof one, &one) == 0;
+            return;
+        }
+}
+[[gnu::used, gnu::section(".preinit_array")]] void (*const preinit_blas)(int, char**, char**) =
+    start_blas_single_threaded;
 
 // Bits of lua.c's collectargs, plus the GNU-style --help and --version.
 enum : unsigned {
@@ -228,6 +260,7 @@ int pmain(lua_State* L) {
 } // namespace
 
 int main(int argc, char** argv) {
+    if (g_narrowed) sched_setaffinity(0, sizeof g_cpus, &g_cpus);
     lua_State* L = luaL_newstate();
     if (L == nullptr) {
         std::fprintf(stderr, "%s: cannot create state: not enough memory\n", kProgname);

@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace froth {
 namespace {
@@ -57,10 +58,9 @@ Variation first_variation(const Cluster& c, const PositionBasis& P, const PairGe
     d.grad_energy_full = P.restrict(apply_stiffness(c, c.positions()));
     d.grad_energy = d.grad_energy_full;
     project_normal(c, P, g, d.grad_energy);
-    const Eigen::SparseMatrix<double> G = body_volume_gradients(c);
+    const Eigen::MatrixXd G = body_volume_gradients(c);
     d.grad_volume.resize(P.size(), c.n_bodies());
-    for (int b = 0; b < c.n_bodies(); ++b)
-        d.grad_volume.col(b) = P.restrict(Eigen::VectorXd(G.col(b)));
+    for (int b = 0; b < c.n_bodies(); ++b) d.grad_volume.col(b) = P.restrict(G.col(b));
     d.weight.resize(P.size());
     for (int v = 0; v < c.n_vertices(); ++v) {
         double m = 0;
@@ -325,9 +325,9 @@ class Minimizer {
             Eigen::VectorXd dV(nb);
             for (int b = 0; b < nb; ++b) dV[b] = c_.target_volumes()[b] - V[b];
             if (max_target_deviation(c_, V) <= 1e-15) return;
-            const Eigen::SparseMatrix<double> G = body_volume_gradients(c_, X);
+            const Eigen::MatrixXd G = body_volume_gradients(c_, X);
             Eigen::MatrixXd B(P.size(), nb);
-            for (int b = 0; b < nb; ++b) B.col(b) = P.restrict(Eigen::VectorXd(G.col(b)));
+            for (int b = 0; b < nb; ++b) B.col(b) = P.restrict(G.col(b));
             const Eigen::MatrixXd WB = d.weight.asDiagonal() * B;
             const Eigen::VectorXd y = WB * (B.transpose() * WB).partialPivLu().solve(dV);
             for (int v = 0; v < c_.n_vertices(); ++v) X[v] += P.displacement(y, v);
@@ -338,16 +338,23 @@ class Minimizer {
         return find_degenerate_facet(c_, X).first < 0 && merit(X) <= bound;
     }
 
-    /// The smallest corner angle of any facet at X, degrees.
+    /// The smallest corner angle of any facet at X, degrees. The corner is found by its
+    /// cotangent u.w / |u x w|, which falls as the angle grows, so only one atan2 is taken.
     double min_facet_angle(const std::vector<Vec3>& X) const {
-        double lo = 180;
+        double best_cot = -std::numeric_limits<double>::infinity(), sine = 0, cosine = -1;
         for (const Surface& s : c_.surfaces())
             for (const Tri& t : s.triangles)
                 for (int k = 0; k < 3; ++k) {
                     const Vec3 u = X[t[(k + 1) % 3]] - X[t[k]], w = X[t[(k + 2) % 3]] - X[t[k]];
-                    lo = std::min(lo, std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / M_PI);
+                    const double sn = u.cross(w).norm(), cs = u.dot(w);
+                    // a degenerate corner (sn = 0) counts as 0 degrees unless it is a flat 180
+                    const double cot = sn > 0 ? cs / sn
+                                              : (cs >= 0 ? std::numeric_limits<double>::infinity()
+                                                         : -std::numeric_limits<double>::infinity());
+                    if (cot > best_cot)
+                        best_cot = cot, sine = sn, cosine = cs;
                 }
-        return lo;
+        return std::atan2(sine, cosine) * 180 / M_PI;
     }
 
     double energy_at(const std::vector<Vec3>& X) const {

@@ -50,9 +50,9 @@ double max_target_deviation(const Cluster& c, const std::vector<double>& volumes
 /// translation-invariant form that sums to zero over a closed body; at the rim vertices of a
 /// lid the films' cone gradients plus the lid's own (lid_volume differentiated by central
 /// differences, exact for flat walls, where it is quadratic in the positions).
-Eigen::SparseMatrix<double> body_volume_gradients(const Cluster& c);
+Eigen::MatrixXd body_volume_gradients(const Cluster& c);
 /// The same at positions X (one per vertex) instead of the cluster's own.
-Eigen::SparseMatrix<double> body_volume_gradients(const Cluster& c, const std::vector<Vec3>& X);
+Eigen::MatrixXd body_volume_gradients(const Cluster& c, const std::vector<Vec3>& X);
 
 /// Per (surface, vertex) pair (Cluster::pair_*): lumped mass m_iv = 1/3 sum |sigma| and the
 /// area-weighted normal omega_iv = sum |sigma| nu_sigma / sum |sigma| (not normalised).
