@@ -1,7 +1,7 @@
 #pragma once
 /// Anisotropic surface energy densities of the class (1.15) of the seed (Barrett, Garcke and
-/// Nürnberg 2009), their duals (1.16), the seed's presets (1.17), (5.6), Figs. 2 and 3, and the
-/// element matrices of <nabla_s^Gt X, nabla_s^Gt chi>_gamma (1.24a,b) on one triangle.
+/// Nürnberg 2009), their duals (1.16), the seed's presets (1.17), (5.6), Figs. 2 and 3. The
+/// element matrices of <nabla_s^Gt X, nabla_s^Gt chi>_gamma (1.24a,b) are assembly/elements.h.
 ///
 ///   gamma(p)   = ( sum_l [gamma_l(p)]^r )^(1/r),  gamma_l(p) = sqrt(p . G_l p),  r >= 1   (1.15)
 ///   gamma'(p)  = gamma^(1-r) sum_l gamma_l^(r-1) G_l p / gamma_l                         (1.15)
@@ -92,31 +92,5 @@ class Anisotropy {
 /// n points of the Fibonacci spiral, nearly uniform on the unit sphere (n >= 1): the starting
 /// guesses of gamma_star and the direction sets of the Wulff shapes (wulff/).
 std::vector<Eigen::Vector3d> fibonacci_sphere(int n);
-
-using ElementMatrix = Eigen::Matrix<double, 9, 9>;
-
-/// Discrete energy of one triangle (x0, x1, x2), E = gamma(nu) |sigma| with nu |sigma| =
-/// (x1 - x0) x (x2 - x0) / 2 (the normal from the vertex order).
-double element_energy(const Anisotropy& gamma, const std::array<Eigen::Vector3d, 3>& x);
-
-/// The element matrix of <nabla_s^Gt ., nabla_s^Gt .>_gamma (1.24a,b) on one triangle, rows and
-/// columns 3a + d (vertex a, coordinate d): sum_l w_l K^(l) (x) Gt_l, where
-/// K^(l)_ab = (e_a, e_b)_Gt_l / (4 A_l), e_a the edge opposite vertex a (cyclic:
-/// e_0 = x2 - x1, e_1 = x0 - x2, e_2 = x1 - x0), A_l = 1/2 sqrt((e1,e1)(e2,e2) - (e1,e2)^2)
-/// in the Gt_l inner product (= gamma_l(nu) |sigma|), and w_l = [gamma_l(nu*)/gamma(nu*)]^(r-1)
-/// the lagged weights at the given normal nu_star (ignored, all 1, for r = 1).
-/// For r = 1, or nu_star the triangle's own normal, M X = grad of element_energy.
-/// Throws GeometryError for a degenerate triangle.
-ElementMatrix element_matrix(const Anisotropy& gamma, const std::array<Eigen::Vector3d, 3>& x,
-                             const Eigen::Vector3d& nu_star);
-/// The derivative of the weights for Newton's method on (3.9): with M(y) =
-/// element_matrix(gamma, x, nu(y)) (x the triangle on Gamma^m, y the same triangle at a new
-/// iterate, nu(y) its normal), d/dy [M(y) y] = M(y) + weight_jacobian(gamma, x, y), and
-/// weight_jacobian = sum_l (M_l y) (dw_l/dy)^T with M_l the unweighted term matrices. Not
-/// symmetric; zero for r = 1. Throws GeometryError for a degenerate x or y.
-ElementMatrix weight_jacobian(const Anisotropy& gamma, const std::array<Eigen::Vector3d, 3>& x,
-                              const std::array<Eigen::Vector3d, 3>& y);
-/// r = 1 form (weights 1); throws InvalidInput for r != 1 (use the lagged form).
-ElementMatrix element_matrix(const Anisotropy& gamma, const std::array<Eigen::Vector3d, 3>& x);
 
 } // namespace froth

@@ -2,12 +2,12 @@
 // growing without bound (minimize.h has the equations).
 #include "flows/minimize.h"
 
-#include "flows/anderson.h"
-
-#include "assembly/flow_systems.h"
+#include "assembly/stiffness.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/interrupt.h"
+#include "schemes/mean_curvature.h"
+#include "solvers/anderson.h"
 #include "solvers/sparse_solvers.h"
 
 #include <Eigen/Dense>

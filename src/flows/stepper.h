@@ -1,25 +1,21 @@
 #pragma once
-/// Time stepping of the seed's schemes: mean curvature flow (3.7a,b)/(3.10a,b) solved as the SPD
-/// system (4.6b) on CHOLMOD, surface diffusion (3.8a,b)/(3.11a,b) as a symmetric saddle point on
-/// UMFPACK (numerics.md §5); r > 1 anisotropies by Newton's method on the nonlinear system of
-/// (3.9) (numerics.md "Anisotropic schemes"). Each flow's system keeps its sparsity pattern and symbolic
-/// factorisation for the life of the stepper; a numeric factorisation is reused across steps
-/// as long as it preconditions GMRES well (solvers/sparse_solvers.h).
+/// Time stepping: TimeStepper drives the schemes of schemes/ (mean_curvature.h: (3.5)/(3.7)/
+/// (3.10) as the SPD system (4.6b) on CHOLMOD; surface_diffusion.h: (3.6)/(3.8)/(3.11) as a
+/// symmetric saddle point on UMFPACK, by default in its volume-exact form; r > 1 anisotropies
+/// by Newton's method on (3.9), schemes/scheme.h). Around a scheme's solve it does what every
+/// step needs: the facet checks before and after, the wall projection, halving of steps whose
+/// iteration fails, the update of positions and time, the report, and the target volumes.
+/// Each scheme keeps its sparsity pattern and symbolic factorisation for the life of the
+/// stepper; a numeric factorisation is reused across steps as long as it preconditions GMRES
+/// well (solvers/sparse_solvers.h).
 
-#include "assembly/flow_systems.h"
-#include "solvers/sparse_solvers.h"
+#include "schemes/mean_curvature.h"
+#include "schemes/surface_diffusion.h"
 
 #include <memory>
 #include <string>
-#include <string_view>
 
 namespace froth {
-
-enum class Flow { MeanCurvature, SurfaceDiffusion };
-
-/// "mcf" or "sd". \throw InvalidInput for anything else.
-Flow parse_flow(std::string_view name);
-const char* flow_name(Flow flow);
 
 /// The state of a cluster as users see it (c:report()).
 struct Report {
@@ -34,40 +30,14 @@ struct Report {
 };
 Report make_report(const Cluster& c);
 
-/// A report after one step, plus what the step cost.
-struct StepReport : Report {
+/// A report after one step, plus what the step cost (schemes/scheme.h StepCost).
+struct StepReport : Report, StepCost {
     Flow flow = Flow::MeanCurvature;
     double tau = 0;
     double energy_before = 0;
-    double assemble_seconds = 0, solve_seconds = 0;
-    int unknowns = 0;
-    int solver_iterations = 0; ///< GMRES iterations on top of the (possibly lagged) factor
-    bool refactorized = false; ///< this step made a new numeric factorisation
-    /// r > 1 only (0 otherwise): the linear solves of the nonlinear iteration (one per
-    /// Newton step), and the last full Newton update max_v |dX_v|_inf relative to the
-    /// cluster's size.
-    int fixed_point_iterations = 0;
-    double fixed_point_change = 0;
-    /// Steps of the scheme this step was made of: 1, or more when an r > 1 iteration failed
-    /// to converge and the step was halved (FixedPointOptions::max_halvings).
+    /// Steps of the scheme this step was made of: 1, or more when an r > 1 or volume-exact
+    /// iteration failed to converge and the step was halved (FixedPointOptions::max_halvings).
     int substeps = 1;
-    /// Volume-exact surface diffusion only (0 otherwise): the linear solves of the fixed point
-    /// for the step's averaged normals (assembly/exact_volumes.h), and the largest relative
-    /// deviation |V_b - V*_b| / V*_b of a body from its target volume after the step.
-    int volume_iterations = 0;
-    double volume_error = 0;
-};
-
-/// The nonlinear iteration for r > 1 (Newton's method on (3.9), numerics.md "Anisotropic
-/// schemes"): stop when a full Newton update moves no coordinate by more than tol relative to
-/// the cluster's size. A step whose iteration needs more than max_iterations solves (or finds
-/// no descent) is split into two steps of tau/2, at most max_halvings times in a row; beyond
-/// that it is a ConvergenceError. (The name is the seed's: the solution is the fixed point of
-/// its lagged iteration, §4.2.)
-struct FixedPointOptions {
-    double tol = 1e-8;
-    int max_iterations = 60;
-    int max_halvings = 4;
 };
 
 /// Steps one cluster; keep one stepper per cluster (it caches that cluster's patterns).
@@ -97,36 +67,15 @@ class TimeStepper {
     bool exact_volumes() const { return exact_volumes_; }
 
   private:
-    struct System;
     StepReport step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls);
     StepReport step_halving(Cluster& c, Flow flow, double tau, bool project, int halvings);
-    /// Assembles the step's system (matrix and rhs) with the r > 1 weights at `lagged`.
-    System& assemble(Cluster& c, Flow flow, double tau, const PositionBasis& P,
-                     const FacetNormals* lagged, StepReport& report);
-    /// One linear solve of the step's system with the r > 1 weights at `lagged`; returns the
-    /// reduced unknowns z (positions X^m + T z first).
-    Eigen::VectorXd solve_once(Cluster& c, Flow flow, double tau, const PositionBasis& P,
-                               const FacetNormals* lagged, StepReport& report);
-    /// Newton's method for the r > 1 system (3.9), from X^m to convergence; returns z.
-    Eigen::VectorXd solve_newton(Cluster& c, Flow flow, double tau, const PositionBasis& P,
-                                 StepReport& report);
-    /// Volume-exact surface diffusion: the fixed point over the averaged normals; returns z.
-    Eigen::VectorXd solve_exact_volumes(Cluster& c, double tau, const PositionBasis& P,
-                                        StepReport& report);
+    /// The scheme of a flow, made on first use.
+    Scheme& scheme(Flow flow);
     static void check_no_body_vanishes(const Cluster& c, const std::vector<Vec3>& X, double tau);
     FixedPointOptions fixed_point_;
     bool exact_volumes_ = true;
-    // Set during a volume-exact step: the pair weights and kappa rows assemble() uses.
-    const PairGeometry* weights_ = nullptr;
-    const Eigen::VectorXd* kappa_rhs_ = nullptr;
-    // The last volume-exact step's solution, its tau and the positions it ended at: the next
-    // step starts its fixed point from it (positions scaled by the taus) when it starts there.
-    Eigen::VectorXd last_z_;
-    double last_tau_ = 1;
-    std::vector<Vec3> last_end_;
-    int revision_ = -1; ///< the cluster's assembly_revision() the patterns were built for
-    std::unique_ptr<System> mcf_, sd_;
-    std::unique_ptr<KappaBasis> Z_;
+    std::unique_ptr<MeanCurvatureScheme> mcf_;
+    std::unique_ptr<SurfaceDiffusionScheme> sd_;
 };
 
 } // namespace froth

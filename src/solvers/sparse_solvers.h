@@ -34,6 +34,7 @@ class SparseDirectSolver {
   public:
     /// reuse = false refactorises for every solve (the plain direct method, for comparisons).
     explicit SparseDirectSolver(Factorization kind, bool reuse = true);
+    Factorization kind() const { return kind_; }
     ~SparseDirectSolver();
     /// A copy shares the last factorisation (read-only, copy on write: whichever copy
     /// refactorises first gets a factor of its own), so a copied solver continues exactly as

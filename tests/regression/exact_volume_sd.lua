@@ -1,6 +1,6 @@
 -- Regression: volume-exact surface diffusion (exact_volumes = true) on every kind of cluster:
--- unequal tensions, quadruple points, flat walls (plane, slab), curved walls (sphere, a Lua
--- F = 0 wall), anisotropy with r = 1 and r > 1. Each step must leave every body at its target
+-- unequal tensions, quadruple points, flat walls (plane, slab), curved walls (sphere, cylinder,
+-- a Lua F = 0 wall), anisotropy with r = 1 and r > 1. Each step must leave every body at its target
 -- volume to 1e-12 (relative) and not raise the energy (beyond 1e-13 relative: round-off of the
 -- kappa rows' volume term); a 1000-step run must hold the volumes to 1e-10.
 local T = require("froth.test")
@@ -32,6 +32,12 @@ run("triple bubble (quadruple pts)", froth.triple_bubble{h = 0.25}, 1e-3, 10)
 run("cube on a plane", froth.cube_on_plane{h = 0.2}, 1e-3, 10)
 run("cylinder in a slab", froth.cylinder_in_slab{h = 0.3}, 1e-3, 10)
 run("drop on a sphere wall", froth.drop_on_sphere_wall{h = 0.2}, 1e-3, 10)
+-- A half ball sheared onto the cylinder y^2 + z^2 = 4 (x3 += sqrt(4 - x2^2): volume-preserving,
+-- the flat face onto the wall); its lid is a fan of flat triangles (lua_api.md, External
+-- boundaries), whose bulge the volume feedback must account for as the rim moves.
+run("drop on a cylinder wall", froth.fragment{solids = {{"ball", r = 0.7, latitude = {0, math.pi / 2}}},
+    h = 0.15, transform = function(x, y, z) return x, y, z + math.sqrt(4 - y * y) end,
+    walls = froth.cylinder_wall{axis = {1, 0, 0}, radius = 2}}, 1e-3, 10)
 run("half ball on a Lua F = 0 wall", froth.fragment{solids = {{"ball", r = 0.5, latitude = {0, math.pi / 2}}},
     h = 0.15, walls = froth.wall{name = "z = 0 from Lua", F = function(_, _, z) return z end}}, 1e-3, 10)
 local e = froth.sphere{h = 0.3}

@@ -1,7 +1,9 @@
 // The anisotropic schemes (3.7)/(3.8) with (3.9) on whole clusters: A_gamma X against the finite-
 // difference gradient of the discrete energy, unconditional stability (Theorem 3.2), Newton's
 // method for r > 1, mobilities, and the self-similar shrinking Wulff shape of (5.4)/(5.5).
-#include "assembly/flow_systems.h"
+#include "assembly/stiffness.h"
+#include "schemes/mean_curvature.h"
+#include "schemes/surface_diffusion.h"
 #include "core/errors.h"
 #include "flows/stepper.h"
 #include "geometry/geometry.h"

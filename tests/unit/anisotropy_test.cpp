@@ -2,7 +2,7 @@
 // element matrices of (1.24a,b) (numerics.md "Anisotropy"). Invariants and finite differences,
 // no golden numbers except closed forms.
 #include "anisotropy/anisotropy.h"
-#include "assembly/flow_systems.h"
+#include "assembly/stiffness.h"
 #include "core/errors.h"
 
 #include "expect_error.h"

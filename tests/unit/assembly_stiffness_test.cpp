@@ -1,5 +1,5 @@
 // Invariants of the P1 stiffness (numerics.md §4): they hold on every mesh, no golden numbers.
-#include "assembly/flow_systems.h"
+#include "assembly/stiffness.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

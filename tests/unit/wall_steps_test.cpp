@@ -2,7 +2,7 @@
 // stability for large tau, attached vertices exactly on planes, volume on the floor, drift off a
 // sphere wall and its projection, failing wall functions, drop_wall_lids, and contact angles.
 // Every mesh is built by hand (wall_meshes.h; no gmsh).
-#include "assembly/flow_systems.h"
+#include "assembly/stiffness.h"
 #include "assembly/kappa_basis.h"
 #include "assembly/position_basis.h"
 #include "core/errors.h"

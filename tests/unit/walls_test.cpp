@@ -2,7 +2,7 @@
 // walls, attaching free boundary edges to walls when a cluster is made, lids closing body
 // volumes on walls (planes, corners, slabs, sphere patches) and the tangent bases T_v of
 // PositionBasis. Every mesh is built by hand (wall_meshes.h; no gmsh). Steps: wall_steps_test.cpp.
-#include "assembly/flow_systems.h"
+#include "assembly/stiffness.h"
 #include "assembly/kappa_basis.h"
 #include "assembly/position_basis.h"
 #include "core/errors.h"

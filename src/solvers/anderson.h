@@ -1,7 +1,7 @@
 #pragma once
 /// Anderson acceleration of fixed-point iterations x -> x + f(x) (type II, as in Walker and
 /// Ni, SIAM J. Numer. Anal. 49, 2011): the next iterate combines the last `depth` iterates so
-/// that the linearised residual is smallest. Used where the schemes iterate a linear solve to
+/// that the linearised residual is smallest. Used where the schemes (schemes/) iterate a linear solve to
 /// a fixed point that converges linearly: minimize's steps at the largest tau and the averaged
 /// normals of the volume-exact surface diffusion step.
 

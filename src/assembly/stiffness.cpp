@@ -1,0 +1,77 @@
+// Stiffness assembly on a whole cluster (stiffness.h) from the element kernels of elements.h.
+#include "assembly/stiffness.h"
+
+namespace froth {
+
+void add_position_stiffness(const Cluster& c, const PositionBasis& P, const FacetNormals* lagged,
+                            SparseBuilder& M) {
+    for_each_element(
+        c, lagged,
+        [&](const Tri& t, const Eigen::Matrix3d& K) {
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) P.add_scaled_identity(M, t[a], t[b], K(a, b));
+        },
+        [&](const Tri& t, const ElementMatrix& E) {
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b)
+                    P.add_block(M, t[a], t[b], E.block<3, 3>(3 * a, 3 * b));
+        });
+}
+
+void set_minus_stiffness_rhs(const Cluster& c, const PositionBasis& P, const FacetNormals* lagged,
+                  Eigen::VectorXd& rhs) {
+    rhs.head(P.size()) = -P.restrict(apply_stiffness(c, c.positions(), lagged));
+}
+
+Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
+                                const FacetNormals* lagged) {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(3 * c.n_vertices());
+    for_each_element(
+        c, lagged,
+        [&](const Tri& t, const Eigen::Matrix3d& K) {
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) y.segment<3>(3 * t[a]) += K(a, b) * X[t[b]];
+        },
+        [&](const Tri& t, const ElementMatrix& E) {
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b)
+                    y.segment<3>(3 * t[a]) += E.block<3, 3>(3 * a, 3 * b) * X[t[b]];
+        });
+    return y;
+}
+
+void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const std::vector<Vec3>& X,
+                              int size, SparseBuilder& M) {
+    M.begin(size, size);
+    const auto& Xm = c.positions();
+    for (int i = 0; i < c.n_surfaces(); ++i) {
+        const Surface& s = c.surface(i);
+        if (s.isotropic() || s.gamma->r() == 1.0) continue;
+        for (const Tri& t : s.triangles) {
+            const ElementMatrix C =
+                s.sigma * weight_jacobian(*s.gamma, {Xm[t[0]], Xm[t[1]], Xm[t[2]]},
+                                          {X[t[0]], X[t[1]], X[t[2]]});
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b)
+                    P.add_block(M, t[a], t[b], C.block<3, 3>(3 * a, 3 * b));
+        }
+    }
+    M.finish();
+}
+
+void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal, SparseBuilder& M) {
+    M.begin(c.n_vertices(), c.n_vertices());
+    const auto& X = c.positions();
+    for (const Surface& s : c.surfaces()) {
+        const double w = isotropic_weight(s);
+        for (const Tri& t : s.triangles) {
+            const Eigen::Matrix3d K = w * local_stiffness(X[t[0]], X[t[1]], X[t[2]]);
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) M.add(t[a], t[b], K(a, b));
+        }
+    }
+    for (int v = 0; v < c.n_vertices(); ++v) M.add(v, v, diagonal[v]);
+    M.finish();
+}
+
+} // namespace froth

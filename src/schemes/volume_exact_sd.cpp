@@ -1,0 +1,112 @@
+// Volume-exact surface diffusion (structure-preserving, after Bao and Zhao's SP-PFEM and Bao,
+// Garcke, Nürnberg and Zhao 2022; the equations are in assembly/exact_volumes.h, numerics.md
+// "Volume-exact surface diffusion"): the seed's (3.6a) tests the velocity against the normals
+// of Gamma^m, so the volume changes by O(tau^2) a step; with the Simpson average of the area
+// vectors over the step,
+//   w_iv = (1/6) sum_sigma [ e_1 x e_2 + (e_1 x d_2 + d_1 x e_2) / 2 + d_1 x d_2 / 3 ],
+// in both off-diagonal blocks of the saddle point of surface_diffusion.h,
+//   sum_{pairs k of body b} chi_bk w_k . dX_v = V_b(X^{m+1}) - V_b(X^m)
+// exactly, and the symmetric structure keeps E(X^{m+1}) <= E(X^m) for every tau. The weights
+// depend on dX: the step is the fixed point dX = S(w(dX)), solved here.
+#include "schemes/surface_diffusion.h"
+
+#include "assembly/exact_volumes.h"
+#include "core/errors.h"
+#include "core/format.h"
+#include "solvers/anderson.h"
+
+#include <string>
+
+namespace froth {
+namespace {
+
+/// A volume-exact step ends when every body is within this of its target (relative).
+constexpr double kVolumeTolerance = 1e-13;
+constexpr int kMaxVolumeIterations = 30;
+
+} // namespace
+
+Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, double tau,
+                                                            const PositionBasis& P,
+                                                            const FixedPointOptions& fp,
+                                                            StepCost& report) {
+    // The fixed point of exact_volumes.h over the weights w(dX): the first solve has the
+    // weights of the start (m omega at X^m, or those of the last step's velocity when this step
+    // continues it), the next ones add the weights' derivative C to the matrix (a Newton step in
+    // dX): 2-4 solves, each on one factorisation reused through GMRES.
+    const PairGeometry g = pair_geometry(c);
+    const double size = cluster_size(c.positions());
+    const int n = c.n_vertices(), nb = c.n_bodies();
+    std::vector<Vec3> dX(n, Vec3::Zero());
+    Eigen::VectorXd z_last;
+    if (last_end_ == c.positions() && last_z_.size() > 0) { // this step continues the last one
+        z_last = last_z_;
+        z_last.head(P.size()) *= tau / last_tau_;
+        for (int v = 0; v < n; ++v) dX[v] = P.displacement(z_last, v);
+    }
+    Anderson anderson(6); // r > 1 only, where Newton's method on (3.9) runs inside each solve
+    const std::vector<double> V0 = body_volumes(c);
+    Eigen::VectorXd change_needed(nb), swept(nb); // V* - V0; what the pairs' motion must sweep
+    for (int b = 0; b < nb; ++b) change_needed[b] = c.target_volumes()[b] - V0[b];
+    swept = change_needed;
+    struct Reset { // the pointers must not outlive this call, whatever it throws
+        SurfaceDiffusionScheme& s;
+        ~Reset() { s.weights_ = nullptr, s.kappa_rhs_ = nullptr; }
+    } reset{*this};
+    for (;;) {
+        const std::vector<Vec3> w = simpson_pair_weights(c, dX);
+        const PairGeometry weighted = with_pair_weights(g, w);
+        const Eigen::VectorXd r = volume_rhs(c, g, swept);
+        weights_ = &weighted, kappa_rhs_ = &r;
+        Eigen::VectorXd z;
+        if (c.nonlinear()) {
+            z = solve_newton(c, tau, P, fp, report);
+        } else if (z_last.size() == 0) {
+            z = solve_once(c, tau, P, nullptr, report);
+        } else { // (M(w) + C) z = rhs + C z_last: the fixed point of M(w(dX)) z = rhs
+            assemble(c, tau, P, nullptr, report);
+            assemble_weight_derivative(c, P, dX, pair_kappa(*Z_, z_last, P.size()),
+                                       static_cast<int>(z_last.size()), volume_jacobian_);
+            const SparseMatrix& C = volume_jacobian_.finish();
+            const SparseMatrix J = matrix_.finish() + C;
+            z = solve_checked(exact_solver_, J, rhs_ + C * z_last, tau, report);
+        }
+        ++report.volume_iterations;
+        const std::vector<Vec3> X = displaced(c, P, z);
+        std::vector<Vec3> dz(n);
+        double change = 0;
+        for (int v = 0; v < n; ++v) {
+            dz[v] = X[v] - c.position(v);
+            change = std::max(change, (dz[v] - dX[v]).cwiseAbs().maxCoeff());
+        }
+        const std::vector<double> V = body_volumes(c, X);
+        report.volume_error = max_target_deviation(c, V);
+        if (report.volume_error <= kVolumeTolerance || change <= 1e-15 * size) {
+            last_end_ = X, last_z_ = z, last_tau_ = tau;
+            return z;
+        }
+        if (report.volume_iterations >= kMaxVolumeIterations)
+            throw ConvergenceError("step: the volume-exact surface diffusion step did not converge in " +
+                                   std::to_string(report.volume_iterations) + " solves (volume error " +
+                                   fmt(report.volume_error) + ", tau = " + fmt(tau) +
+                                   "); the cluster is unchanged (try a smaller tau, or exact_volumes = false)");
+        // The next solve, with the weights w(dz), must sweep what the films must carry: the
+        // needed change less what the lids add beyond the films (curved walls), plus what this
+        // solve missed of its own target (round-off of an ill-conditioned solve).
+        const Eigen::VectorXd missed = swept - pair_sweep(c, w, dz);
+        swept = change_needed - (Eigen::Map<const Eigen::VectorXd>(V.data(), nb) -
+                                 Eigen::Map<const Eigen::VectorXd>(V0.data(), nb) -
+                                 pair_sweep(c, simpson_pair_weights(c, dz), dz)) + missed;
+        if (c.nonlinear()) { // Anderson on (dX, swept): Newton's C is not used there
+            Eigen::VectorXd x(3 * n + nb), f(3 * n + nb);
+            for (int v = 0; v < n; ++v) x.segment<3>(3 * v) = dX[v], f.segment<3>(3 * v) = dz[v] - dX[v];
+            x.tail(nb).setZero(), f.tail(nb) = swept;
+            const Eigen::VectorXd next = anderson.next(x, f);
+            for (int v = 0; v < n; ++v) dz[v] = next.segment<3>(3 * v);
+            swept = next.tail(nb);
+        }
+        dX = std::move(dz), z_last = std::move(z);
+    }
+}
+
+} // namespace froth
