@@ -51,14 +51,7 @@ std::vector<double> body_volumes(const Cluster& c) { return body_volumes(c, c.po
 
 std::vector<double> body_volumes(const Cluster& c, const std::vector<Vec3>& X) {
     std::vector<double> volumes;
-    for (const Body& b : c.bodies()) {
-        double v = 0;
-        for (const BodyFace& f : b.faces)
-            for (const Tri& t : c.surface(f.surface).triangles)
-                v += f.sign * X[t[0]].dot(X[t[1]].cross(X[t[2]])) / 6.0;
-        for (const Lid& lid : b.lids) v += lid_volume(c, lid, X);
-        volumes.push_back(v);
-    }
+    for (const Body& b : c.bodies()) volumes.push_back(body_volume(c, b, X));
     return volumes;
 }
 

@@ -148,6 +148,14 @@ double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) 
 
 double lid_volume(const Cluster& c, const Lid& lid) { return lid_volume(c, lid, c.positions()); }
 
+double body_volume(const Cluster& c, const Body& body, const std::vector<Vec3>& X) {
+    double v = 0;
+    for (const BodyFace& f : body.faces)
+        for (const Tri& t : c.surface(f.surface).triangles) v += f.sign * cone_volume(X[t[0]], X[t[1]], X[t[2]]);
+    for (const Lid& lid : body.lids) v += lid_volume(c, lid, X);
+    return v;
+}
+
 std::vector<int> drop_wall_lids(ClusterSpec& spec) {
     double length = 0;
     int edges = 0;

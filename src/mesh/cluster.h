@@ -233,4 +233,13 @@ double lid_volume(const Cluster& c, const Lid& lid);
 /// The same at positions X (one per vertex of c) instead of the cluster's own.
 double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X);
 
+/// The signed volume of the cone from the origin over the triangle (a, b, c), a . (b x c) / 6:
+/// summed over a closed oriented surface, the volume it encloses (the divergence theorem).
+inline double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)) / 6.0; }
+
+/// The volume of one body at positions X: its signed facets' cones plus its lids. The one
+/// volume kernel: the body orientation at construction, geometry's body_volumes and every
+/// report use it.
+double body_volume(const Cluster& c, const Body& body, const std::vector<Vec3>& X);
+
 } // namespace froth

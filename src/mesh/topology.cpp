@@ -43,8 +43,6 @@ std::string edge_name(int a, int b) {
     return "edge " + std::to_string(a + 1) + "-" + std::to_string(b + 1);
 }
 
-double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)) / 6.0; }
-
 // Solid angle of the triangle abc seen from p, signed by the triangle's orientation (Van
 // Oosterom and Strackee 1983): summed over a closed outward surface it is 4 pi inside, 0 outside.
 double solid_angle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -234,14 +232,9 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
         // (With walls a shell may be open, closed by lids: no winding number; left as signed.)
         if (shells > 1 && walls_.empty()) orient_shells(surfaces_, X_, sign, shell, shells);
         Body body;
-        double volume = 0;
-        for (auto [s, sg] : sign) {
-            body.faces.push_back({s, sg});
-            for (const Tri& t : surfaces_[s].triangles)
-                volume += sg * cone_volume(X_[t[0]], X_[t[1]], X_[t[2]]);
-        }
+        for (auto [s, sg] : sign) body.faces.push_back({s, sg});
         find_lids(body);
-        for (const Lid& lid : body.lids) volume += lid_volume(*this, lid);
+        double volume = body_volume(*this, body, X_);
         if (volume < 0) {
             volume = -volume;
             for (BodyFace& f : body.faces) f.sign = -f.sign;
