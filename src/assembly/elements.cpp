@@ -15,14 +15,16 @@ Eigen::Matrix3d local_stiffness(const Vec3& x0, const Vec3& x1, const Vec3& x2) 
     const double four_area = 2.0 * (x1 - x0).cross(x2 - x0).norm();
     Eigen::Matrix3d K;
     for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) K(a, b) = e[a].dot(e[b]) / four_area;
+        for (int b = 0; b < 3; ++b)
+            K(a, b) = e[a].dot(e[b]) / four_area;
     return K;
 }
 
 FacetNormals facet_normals(const Cluster& c, const std::vector<Vec3>& X) {
     FacetNormals nu(c.n_surfaces());
     for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles) nu[i].push_back(area_vector2(X, t).normalized());
+        for (const Tri& t : c.surface(i).triangles)
+            nu[i].push_back(area_vector2(X, t).normalized());
     return nu;
 }
 
@@ -68,7 +70,8 @@ ElementMatrix element_matrix(const Anisotropy& gamma, const std::array<Vector3d,
     const std::array<Vector3d, 3> e = opposite_edges(x);
     const std::vector<double> w = gamma.term_weights(nu_star);
     ElementMatrix M = ElementMatrix::Zero();
-    for (int l = 0; l < gamma.n_terms(); ++l) M += w[l] * term_matrix(gamma, l, e, n);
+    for (int l = 0; l < gamma.n_terms(); ++l)
+        M += w[l] * term_matrix(gamma, l, e, n);
     return M;
 }
 
@@ -80,10 +83,12 @@ ElementMatrix weight_jacobian(const Anisotropy& gamma, const std::array<Vector3d
     const std::array<Vector3d, 3> e = opposite_edges(x), e_new = opposite_edges(y);
     const std::vector<Vector3d> dw = gamma.term_weight_gradients(n_new);
     Eigen::Matrix<double, 9, 1> Y, b;
-    for (int a = 0; a < 3; ++a) Y.segment<3>(3 * a) = y[a];
+    for (int a = 0; a < 3; ++a)
+        Y.segment<3>(3 * a) = y[a];
     for (int l = 0; l < gamma.n_terms(); ++l) {
         // d(n_new . g)/dy_a = g x e_new_a for a fixed g, so dw_l/dy_a = dw_l/dn x e_new_a.
-        for (int a = 0; a < 3; ++a) b.segment<3>(3 * a) = dw[l].cross(e_new[a]);
+        for (int a = 0; a < 3; ++a)
+            b.segment<3>(3 * a) = dw[l].cross(e_new[a]);
         C += (term_matrix(gamma, l, e, n) * Y) * b.transpose();
     }
     return C;

@@ -2,7 +2,8 @@
 /// The element kernels of every scheme, on one triangle (x0, x1, x2) of a surface:
 ///   P1 stiffness (isotropic):  K_ab = (e_a . e_b) / (4 |sigma|), so K X = grad |sigma|   (3.5b)
 ///   anisotropic (1.24a,b):     sum_l w_l K^(l) (x) Gt_l, the matrix of
-///                              <nabla_s^Gt X, nabla_s^Gt chi>_gamma, lagged weights for r > 1 (3.9)
+///                              <nabla_s^Gt X, nabla_s^Gt chi>_gamma, lagged weights for r > 1
+///                              (3.9)
 ///   Newton correction (3.9):   the derivative of those weights (weight_jacobian)
 /// and the loops that visit every facet of a cluster with its sigma-scaled element matrix.
 /// Everything that assembles a stiffness (assembly/stiffness.h, the schemes, minimize) goes
@@ -80,7 +81,8 @@ void for_each_element(const Cluster& c, const FacetNormals* lagged, Iso&& iso, A
         const Surface& s = c.surface(i);
         if (s.isotropic()) {
             const double w = isotropic_weight(s);
-            for (const Tri& t : s.triangles) iso(t, w * local_stiffness(X[t[0]], X[t[1]], X[t[2]]));
+            for (const Tri& t : s.triangles)
+                iso(t, w * local_stiffness(X[t[0]], X[t[1]], X[t[2]]));
             continue;
         }
         const bool lag = s.gamma->r() != 1.0 && lagged && !(*lagged)[i].empty();

@@ -8,12 +8,13 @@ PositionBasis::PositionBasis(const Cluster& c) {
     const int n = c.n_vertices();
     offset_.assign(n + 1, 0);
     constrained_.assign(n, 0);
-    T_.assign(c.has_walls() ? n : 0, Eigen::Matrix3d::Identity());
+    T_.assign(c.has_walls() || c.has_fixed() ? n : 0, Eigen::Matrix3d::Identity());
     for (int v = 0; v < n; ++v) {
         const int free = c.vertex_freedom(v);
         offset_[v + 1] = offset_[v] + free;
         if (free == 3) continue;
         constrained_[v] = 1;
+        if (free == 0) continue; // a fixed vertex: no directions
         const std::vector<int> walls = c.vertex_walls(v);
         Eigen::Matrix3Xd N(3, walls.size());
         for (std::size_t k = 0; k < walls.size(); ++k)

@@ -1,7 +1,7 @@
 #pragma once
 /// The space V_partial^h of (3.10)/(3.11) as a change of basis (numerics.md §3): at a vertex
 /// attached to walls, dX_v = T_v y_v with T_v an orthonormal basis of the directions tangent to
-/// its walls (3x2 on one wall, 3x1 on two); elsewhere T_v = I. The position unknowns of the
+/// its walls (3x2 on one wall, 3x1 on two), none at a fixed vertex; elsewhere T_v = I. The position unknowns of the
 /// systems are the y_v, numbered vertex by vertex. T_v follows the wall normals at X^m (the
 /// seed's linearisation), so it changes each step on curved walls; its size never does.
 

@@ -9,7 +9,8 @@ void add_position_stiffness(const Cluster& c, const PositionBasis& P, const Face
         c, lagged,
         [&](const Tri& t, const Eigen::Matrix3d& K) {
             for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) P.add_scaled_identity(M, t[a], t[b], K(a, b));
+                for (int b = 0; b < 3; ++b)
+                    P.add_scaled_identity(M, t[a], t[b], K(a, b));
         },
         [&](const Tri& t, const ElementMatrix& E) {
             for (int a = 0; a < 3; ++a)
@@ -19,7 +20,7 @@ void add_position_stiffness(const Cluster& c, const PositionBasis& P, const Face
 }
 
 void set_minus_stiffness_rhs(const Cluster& c, const PositionBasis& P, const FacetNormals* lagged,
-                  Eigen::VectorXd& rhs) {
+                             Eigen::VectorXd& rhs) {
     rhs.head(P.size()) = -P.restrict(apply_stiffness(c, c.positions(), lagged));
 }
 
@@ -30,7 +31,8 @@ Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
         c, lagged,
         [&](const Tri& t, const Eigen::Matrix3d& K) {
             for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) y.segment<3>(3 * t[a]) += K(a, b) * X[t[b]];
+                for (int b = 0; b < 3; ++b)
+                    y.segment<3>(3 * t[a]) += K(a, b) * X[t[b]];
         },
         [&](const Tri& t, const ElementMatrix& E) {
             for (int a = 0; a < 3; ++a)
@@ -59,7 +61,8 @@ void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const st
     M.finish();
 }
 
-void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal, SparseBuilder& M) {
+void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal,
+                               SparseBuilder& M) {
     M.begin(c.n_vertices(), c.n_vertices());
     const auto& X = c.positions();
     for (const Surface& s : c.surfaces()) {
@@ -67,10 +70,12 @@ void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal
         for (const Tri& t : s.triangles) {
             const Eigen::Matrix3d K = w * local_stiffness(X[t[0]], X[t[1]], X[t[2]]);
             for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) M.add(t[a], t[b], K(a, b));
+                for (int b = 0; b < 3; ++b)
+                    M.add(t[a], t[b], K(a, b));
         }
     }
-    for (int v = 0; v < c.n_vertices(); ++v) M.add(v, v, diagonal[v]);
+    for (int v = 0; v < c.n_vertices(); ++v)
+        M.add(v, v, diagonal[v]);
     M.finish();
 }
 

@@ -4,6 +4,7 @@
 #include "bindings/lua_builders.h"
 
 #include "bindings/lua_cluster.h"
+#include "bindings/lua_queries.h"
 #include "bindings/lua_walls.h"
 #include "core/errors.h"
 #include "io/msh_reader.h"
@@ -131,6 +132,8 @@ int l_cluster(lua_State* L) {
     lua_pop(L, 1);
     o.push("walls");
     spec.walls = read_walls(L, -1, "cluster: walls");
+    lua_pop(L, 1);
+    if (o.push("fixed") != LUA_TNIL) spec.fixed = read_vertex_ids(L, -1, "cluster: fixed");
     lua_pop(L, 1);
     o.finish();
     return guarded(L, [&] {

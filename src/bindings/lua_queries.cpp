@@ -1,6 +1,7 @@
 // froth.Cluster queries and edits (issue 14, item 4): c:vertices{where}, c:facets{where},
 // c:edges{where} list elements with their attributes, filtered by a Lua predicate, as Evolver's
-// `list vertex where ...`; c:set_vertex moves one vertex. Ids are 1-based here.
+// `list vertex where ...`; c:set_vertex moves one vertex; c:fix, c:unfix and c:fixed hold
+// vertices in place (Evolver's `fix vertex where ...`). Ids are 1-based here.
 #include "bindings/lua_queries.h"
 
 #include "bindings/lua_cluster.h"
@@ -9,6 +10,7 @@
 #include "geometry/geometry.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -79,7 +81,7 @@ int l_vertices(lua_State* L) {
     const int out = lua_gettop(L);
     int n = 0;
     for (int v = 0; v < c.n_vertices(); ++v) {
-        lua_createtable(L, 0, 7);
+        lua_createtable(L, 0, 8);
         set_integer(L, "id", v + 1);
         push_vec(L, c.position(v));
         lua_setfield(L, -2, "x");
@@ -96,6 +98,7 @@ int l_vertices(lua_State* L) {
         set_integers(L, "walls", c.vertex_walls(v), 1);
         set_bool(L, "triple_line", on_line[v]);
         set_bool(L, "quadruple_point", quadruple[v]);
+        set_bool(L, "fixed", c.is_fixed(v));
         keep_if(L, where, out, n);
     }
     return 1;
@@ -182,12 +185,83 @@ int l_set_vertex(lua_State* L) {
     });
 }
 
+/// The id at the top of the stack (an integer, or a record's `id`), 0-based; pops it.
+int pop_vertex_id(lua_State* L, const char* op, int entry) {
+    if (lua_type(L, -1) == LUA_TTABLE) {
+        lua_getfield(L, -1, "id");
+        lua_remove(L, -2);
+    }
+    int is_integer = 0;
+    const lua_Integer id = lua_tointegerx(L, -1, &is_integer);
+    if (!is_integer || id < 1 || id > std::numeric_limits<int>::max())
+        luaL_error(L,
+                   "%s: entry %d is not a vertex id (a positive integer, or a record of "
+                   "c:vertices{...}), got %s",
+                   op, entry, luaL_tolstring(L, -1, nullptr));
+    lua_pop(L, 1);
+    return static_cast<int>(id) - 1;
+}
+
+/// c:fix(vertices) / c:unfix(vertices): returns the number of fixed vertices afterwards.
+int set_fixed(lua_State* L, bool fixed) {
+    ClusterHandle& h = self(L);
+    const char* op = fixed ? "fix" : "unfix";
+    ChangeGuard change(L, h, op);
+    const std::vector<int> ids = read_vertex_ids(L, 2, op);
+    return guarded(L, [&] {
+        h.cluster.set_fixed(ids, fixed);
+        h.stepper.reset(); // the schemes' unknowns changed
+        lua_pushinteger(L, static_cast<lua_Integer>(h.cluster.fixed_vertices().size()));
+        return 1;
+    });
+}
+
+int l_fix(lua_State* L) {
+    return set_fixed(L, true);
+}
+int l_unfix(lua_State* L) {
+    return set_fixed(L, false);
+}
+
+int l_fixed(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    lua_newtable(L);
+    const std::vector<int> ids = c.fixed_vertices();
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        lua_pushinteger(L, ids[k] + 1);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+    }
+    return 1;
+}
+
 const luaL_Reg methods[] = {
     {"vertices", l_vertices},     {"facets", l_facets}, {"edges", l_edges},
-    {"set_vertex", l_set_vertex}, {nullptr, nullptr},
+    {"set_vertex", l_set_vertex}, {"fix", l_fix},       {"unfix", l_unfix},
+    {"fixed", l_fixed},           {nullptr, nullptr},
 };
 
 } // namespace
+
+std::vector<int> read_vertex_ids(lua_State* L, int idx, const char* op) {
+    idx = lua_absindex(L, idx);
+    std::vector<int> ids;
+    if (lua_type(L, idx) == LUA_TNUMBER) {
+        lua_pushvalue(L, idx);
+        ids.push_back(pop_vertex_id(L, op, 1));
+        return ids;
+    }
+    if (lua_type(L, idx) != LUA_TTABLE)
+        luaL_error(L,
+                   "%s: expected a vertex id, an array of ids or of vertex records "
+                   "(c:vertices{...}), got %s",
+                   op, luaL_typename(L, idx));
+    const lua_Integer n = luaL_len(L, idx);
+    for (lua_Integer k = 1; k <= n; ++k) {
+        lua_rawgeti(L, idx, k);
+        ids.push_back(pop_vertex_id(L, op, static_cast<int>(k)));
+    }
+    return ids;
+}
 
 void add_query_methods(lua_State* L) {
     luaL_setfuncs(L, methods, 0);

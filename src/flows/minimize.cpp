@@ -40,6 +40,7 @@ void project_normal(const Cluster& c, const PositionBasis& P, const PairGeometry
                     Eigen::VectorXd& y) {
     for (int v = 0; v < c.n_vertices(); ++v) {
         const int n = P.dim(v), pairs = c.pair_begin(v + 1) - c.pair_begin(v);
+        if (n == 0) continue; // a fixed vertex
         Eigen::MatrixXd N(n, pairs);
         for (int k = 0; k < pairs; ++k)
             N.col(k) = P.T(v).leftCols(n).transpose() * g.omega[c.pair_begin(v) + k];
@@ -104,12 +105,12 @@ void check(const MinimizeOptions& o) {
 
 /// Solves K U = B column by column with one fresh factorisation, where K is the step's
 /// matrix in the reduced unknowns: T^T (A + 1/tau sum m omega omega^T) T, or for an isotropic
-/// cluster without walls (K_scalar + 1/tau diag(m)) (x) I_3, whose three coordinates are one
+/// cluster without walls or fixed vertices (K_scalar + 1/tau diag(m)) (x) I_3, whose three coordinates are one
 /// scalar system with three times the columns.
 class StepSystem {
   public:
     explicit StepSystem(const Cluster& c) {
-        separable_ = !c.has_walls() && !c.anisotropic();
+        separable_ = !c.has_walls() && !c.has_fixed() && !c.anisotropic();
     }
 
     void assemble(const Cluster& c, const PositionBasis& P, const PairGeometry& g, double tau) {

@@ -22,16 +22,19 @@ std::string vertex_text(int v, const Vec3& x) {
 /// Rank of a set of unit normals (1, 2 or 3).
 int normal_rank(const std::vector<Vec3>& normals) {
     Eigen::MatrixXd N(3, normals.size());
-    for (std::size_t k = 0; k < normals.size(); ++k) N.col(k) = normals[k];
+    for (std::size_t k = 0; k < normals.size(); ++k)
+        N.col(k) = normals[k];
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(N);
     const auto& s = svd.singularValues();
     int rank = 0;
-    for (int k = 0; k < s.size(); ++k) rank += s[k] > 1e-8 * s[0];
+    for (int k = 0; k < s.size(); ++k)
+        rank += s[k] > 1e-8 * s[0];
     return rank;
 }
 
 int find_root(std::vector<int>& parent, int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    while (parent[v] != v)
+        v = parent[v] = parent[parent[v]];
     return v;
 }
 
@@ -43,7 +46,8 @@ void Cluster::attach_walls() {
     std::vector<std::pair<int, int>> vertex_wall;
     std::vector<int> surface_of(n, -1), edge_other(n, -1);
     for (const BoundaryEdge& e : boundary_edges_)
-        for (int v : {e.a, e.b}) surface_of[v] = e.surface, edge_other[v] = v == e.a ? e.b : e.a;
+        for (int v : {e.a, e.b})
+            surface_of[v] = e.surface, edge_other[v] = v == e.a ? e.b : e.a;
     // Vertices of the mesh are placed on the walls by the builders up to round-off; a user mesh
     // gets a relative tolerance of 1e-6 of a typical edge length.
     const double edge = std::sqrt(4 / std::sqrt(3.0) * initial_area_ / std::max(n_facets_, 1));
@@ -61,26 +65,25 @@ void Cluster::attach_walls() {
                 normals.push_back(walls_[w]->normal(X_[v]));
             }
         }
-        const std::string where = vertex_text(v, X_[v]) + " of surface " +
-                                  std::to_string(surface_of[v] + 1);
+        const std::string where =
+            vertex_text(v, X_[v]) + " of surface " + std::to_string(surface_of[v] + 1);
         if (normals.empty())
-            throw TopologyError("cluster: " + where + " is on a free boundary edge (" +
-                                std::to_string(v + 1) + "-" + std::to_string(edge_other[v] + 1) +
-                                ") but on no wall: the nearest, wall " +
-                                std::to_string(nearest_wall + 1) + " (" +
-                                walls_[nearest_wall]->describe() + "), is at distance " +
-                                fmt(nearest) + " (tolerance " + fmt(tol) + ")");
+            throw TopologyError(
+                "cluster: " + where + " is on a free boundary edge (" + std::to_string(v + 1) +
+                "-" + std::to_string(edge_other[v] + 1) + ") but on no wall: the nearest, wall " +
+                std::to_string(nearest_wall + 1) + " (" + walls_[nearest_wall]->describe() +
+                "), is at distance " + fmt(nearest) + " (tolerance " + fmt(tol) + ")");
         freedom_[v] = 3 - normal_rank(normals);
         if (freedom_[v] == 0)
-            throw TopologyError("cluster: " + where + " lies on walls whose normals span all "
+            throw TopologyError("cluster: " + where +
+                                " lies on walls whose normals span all "
                                 "directions; it could not move");
     }
     build_csr_lists(n, vertex_wall, vw_start_, vw_list_);
     for (const BoundaryEdge& e : boundary_edges_) {
         const std::vector<int> wa = vertex_walls(e.a), wb = vertex_walls(e.b);
-        if (std::none_of(wa.begin(), wa.end(), [&](int w) {
-                return std::find(wb.begin(), wb.end(), w) != wb.end();
-            }))
+        if (std::none_of(wa.begin(), wa.end(),
+                         [&](int w) { return std::find(wb.begin(), wb.end(), w) != wb.end(); }))
             throw TopologyError("cluster: boundary edge " + std::to_string(e.a + 1) + "-" +
                                 std::to_string(e.b + 1) + " of surface " +
                                 std::to_string(e.surface + 1) +
@@ -91,7 +94,8 @@ void Cluster::attach_walls() {
 void Cluster::find_lids(Body& body) const {
     if (boundary_edges_.empty()) return;
     std::vector<std::array<int, 2>> keys;
-    for (const BoundaryEdge& e : boundary_edges_) keys.push_back({e.a, e.b});
+    for (const BoundaryEdge& e : boundary_edges_)
+        keys.push_back({e.a, e.b});
     std::sort(keys.begin(), keys.end());
     std::vector<std::array<int, 2>> edges;
     for (const BodyFace& f : body.faces)
@@ -105,7 +109,8 @@ void Cluster::find_lids(Body& body) const {
             }
     std::vector<int> parent(n_vertices());
     std::iota(parent.begin(), parent.end(), 0);
-    for (const auto& e : edges) parent[find_root(parent, e[0])] = find_root(parent, e[1]);
+    for (const auto& e : edges)
+        parent[find_root(parent, e[0])] = find_root(parent, e[1]);
     std::vector<int> lid_of(n_vertices(), -1);
     for (const auto& e : edges) {
         int& id = lid_of[find_root(parent, e[0])];
@@ -125,7 +130,8 @@ void Cluster::find_lids(Body& body) const {
 
 double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) {
     Vec3 center = Vec3::Zero();
-    for (const auto& e : lid.edges) center += X[e[0]];
+    for (const auto& e : lid.edges)
+        center += X[e[0]];
     center /= static_cast<double>(lid.edges.size());
     // The fan's apex on all the lid's walls (alternating projections: their common line or
     // corner for planes). Any such point closes a flat lid exactly.
@@ -133,8 +139,7 @@ double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) 
     for (int pass = 0; pass < (lid.walls.size() > 1 ? 50 : 1); ++pass)
         for (int w : lid.walls) {
             const Wall& wall = *c.walls()[w];
-            apex = wall.gradient(apex).norm() > 0 ? wall.project(apex)
-                                                  : X[lid.edges.front()[0]];
+            apex = wall.gradient(apex).norm() > 0 ? wall.project(apex) : X[lid.edges.front()[0]];
         }
     // On one wall its own flux (curved walls count the lid's bulge); across walls flat fans.
     double flux = 0;
@@ -146,13 +151,17 @@ double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) 
     return flux / 3.0;
 }
 
-double lid_volume(const Cluster& c, const Lid& lid) { return lid_volume(c, lid, c.positions()); }
+double lid_volume(const Cluster& c, const Lid& lid) {
+    return lid_volume(c, lid, c.positions());
+}
 
 double body_volume(const Cluster& c, const Body& body, const std::vector<Vec3>& X) {
     double v = 0;
     for (const BodyFace& f : body.faces)
-        for (const Tri& t : c.surface(f.surface).triangles) v += f.sign * cone_volume(X[t[0]], X[t[1]], X[t[2]]);
-    for (const Lid& lid : body.lids) v += lid_volume(c, lid, X);
+        for (const Tri& t : c.surface(f.surface).triangles)
+            v += f.sign * cone_volume(X[t[0]], X[t[1]], X[t[2]]);
+    for (const Lid& lid : body.lids)
+        v += lid_volume(c, lid, X);
     return v;
 }
 

@@ -51,6 +51,26 @@ Cluster::Cluster(ClusterSpec spec) {
     build_csr_lists(n_vertices(), vertex_edge, vj_start_, vj_list_);
     orient_bodies(spec.bodies);
     target_volumes_ = initial_volumes_;
+    fixed_.assign(n_vertices(), 0);
+    set_fixed(spec.fixed, true);
+}
+
+std::vector<int> Cluster::fixed_vertices() const {
+    std::vector<int> ids;
+    for (int v = 0; v < n_vertices(); ++v)
+        if (fixed_[v]) ids.push_back(v);
+    return ids;
+}
+
+void Cluster::set_fixed(const std::vector<int>& vertices, bool fixed) {
+    for (int v : vertices)
+        if (v < 0 || v >= n_vertices())
+            throw InvalidInput(std::string(fixed ? "fix" : "unfix") + ": vertex " +
+                               std::to_string(v + 1) + " does not exist (the "
+                               "cluster has vertices 1.." + std::to_string(n_vertices()) + ")");
+    for (int v : vertices) fixed_[v] = fixed;
+    n_fixed_ = static_cast<int>(std::count(fixed_.begin(), fixed_.end(), 1));
+    ++assembly_revision_;
 }
 
 void Cluster::set_target_volume(int body, double volume) {
@@ -77,6 +97,10 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
     if (spec.surfaces.empty()) throw InvalidInput("cluster: no surfaces");
     for (std::size_t w = 0; w < spec.walls.size(); ++w)
         if (!spec.walls[w]) throw InvalidInput("cluster: wall " + std::to_string(w + 1) + " is null");
+    for (int v : spec.fixed)
+        if (v < 0 || v >= n)
+            throw InvalidInput("cluster: fixed vertex " + std::to_string(v + 1) +
+                               " does not exist (there are " + std::to_string(n) + " vertices)");
     for (int v = 0; v < n; ++v)
         if (!spec.vertices[v].allFinite())
             throw InvalidInput("cluster: " + vertex_name(v) + " has a non-finite coordinate");

@@ -38,6 +38,9 @@ struct ClusterSpec {
     /// External boundaries (seed (1.25)): every free boundary edge (an edge of one facet only)
     /// must lie on one of them; its vertices are then constrained to the wall (3.10)/(3.11).
     std::vector<WallPtr> walls;
+    /// Vertices held in place (Evolver's `fixed`): every scheme and minimize leave them where
+    /// they are (their displacement space is {0}, as the walls' is the tangent plane).
+    std::vector<int> fixed;
 };
 
 /// A surface of the cluster. Its energy density is sigma gamma(nu) (seed (1.15); gamma null:
@@ -47,7 +50,7 @@ struct Surface {
     double sigma = 1.0;
     std::shared_ptr<const Anisotropy> gamma; ///< null: isotropic
     Mobility beta;                           ///< 1 unless set
-    std::vector<int> vertices; ///< sorted global ids of the vertices of this surface
+    std::vector<int> vertices;               ///< sorted global ids of the vertices of this surface
 
     /// True when the surface uses the cotangent (isotropic) stiffness: gamma null or a multiple
     /// of |.|.
@@ -157,10 +160,19 @@ class Cluster {
     /// The walls (ids into walls()) that vertex v is attached to; empty unless v is on a free
     /// boundary edge. Fixed when the cluster is made.
     std::vector<int> vertex_walls(int v) const;
-    /// How many directions vertex v may move in: 3, or 3 - rank of its walls' normals.
-    int vertex_freedom(int v) const { return freedom_[v]; }
+    /// How many directions vertex v may move in: 0 if it is fixed, else 3, or 3 - rank of its
+    /// walls' normals.
+    int vertex_freedom(int v) const { return fixed_[v] ? 0 : freedom_[v]; }
     /// True if some vertex is attached to a wall.
     bool has_walls() const { return !boundary_edges_.empty(); }
+    /// Fixed vertices (ClusterSpec::fixed, set_fixed).
+    bool is_fixed(int v) const { return fixed_[v] != 0; }
+    bool has_fixed() const { return n_fixed_ > 0; }
+    /// The fixed vertices in increasing order.
+    std::vector<int> fixed_vertices() const;
+    /// Fixes (or frees) the given vertices; the assembly revision changes, since the schemes'
+    /// unknowns do. \throw InvalidInput for an id out of range (nothing changes then).
+    void set_fixed(const std::vector<int>& vertices, bool fixed);
 
     /// Model time, advanced by the schemes.
     double time() const { return time_; }
@@ -202,6 +214,8 @@ class Cluster {
     std::vector<WallPtr> walls_;
     std::vector<BoundaryEdge> boundary_edges_;
     std::vector<int> vw_start_, vw_list_, freedom_; // CSR vertex -> walls; free directions
+    std::vector<char> fixed_;                       // per vertex
+    int n_fixed_ = 0;
     std::vector<double> initial_volumes_, target_volumes_;
     double initial_area_ = 0;
     int n_facets_ = 0;
@@ -211,7 +225,8 @@ class Cluster {
 
 /// Evolver's `r`: every facet split into four at its edge midpoints (one midpoint per edge, so
 /// triple lines, quadruple points and bodies are kept; midpoints of free boundary edges are
-/// projected onto the walls both ends lie on). Tensions, anisotropies, mobilities, walls, time
+/// projected onto the walls both ends lie on; the midpoint of an edge between two fixed vertices
+/// is fixed, so a fixed frame stays fixed). Tensions, anisotropies, mobilities, walls, time
 /// and the reference and target volumes are carried over; the vertices of c keep their ids.
 /// Volumes are unchanged except where a curved wall's lid gains the projected midpoints.
 /// \throw what the Cluster constructor throws (it should not for a valid c).
@@ -227,15 +242,17 @@ std::vector<int> drop_wall_lids(ClusterSpec& spec);
 /// lid's walls (their common point), to the loop's edges, signed like the divergence-theorem sum
 /// of the body's facets. Exact for flat walls, also for a lid on two or three planes (each fan
 /// triangle lies in the plane of its edge). On one curved wall each fan triangle counts the
-/// flux of the wall patch it spans (Wall::fan_flux: exact for spheres up to O(h^2), the flat
-/// triangle for other walls, which leaves out the lid's bulge).
+/// flux of the wall patch it spans (Wall::fan_flux: exact for spheres and cylinders up to O(h^2),
+/// the flat triangle for user walls, which leaves out the lid's bulge).
 double lid_volume(const Cluster& c, const Lid& lid);
 /// The same at positions X (one per vertex of c) instead of the cluster's own.
 double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X);
 
 /// The signed volume of the cone from the origin over the triangle (a, b, c), a . (b x c) / 6:
 /// summed over a closed oriented surface, the volume it encloses (the divergence theorem).
-inline double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)) / 6.0; }
+inline double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return a.dot(b.cross(c)) / 6.0;
+}
 
 /// The volume of one body at positions X: its signed facets' cones plus its lids. The one
 /// volume kernel: the body orientation at construction, geometry's body_volumes and every

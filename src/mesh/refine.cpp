@@ -55,6 +55,9 @@ Cluster refine(const Cluster& c) {
         }
         spec.surfaces.push_back(std::move(out));
     }
+    spec.fixed = c.fixed_vertices();
+    for (const auto& [ends, m] : midpoint)
+        if (c.is_fixed(ends.first) && c.is_fixed(ends.second)) spec.fixed.push_back(m);
     for (const Body& b : c.bodies()) {
         std::vector<int> ids;
         for (const BodyFace& f : b.faces) ids.push_back(f.surface);

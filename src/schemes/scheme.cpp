@@ -19,7 +19,8 @@ double seconds_since(Clock::time_point t0) {
 
 double max_change(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
     double d = 0;
-    for (std::size_t v = 0; v < a.size(); ++v) d = std::max(d, (a[v] - b[v]).cwiseAbs().maxCoeff());
+    for (std::size_t v = 0; v < a.size(); ++v)
+        d = std::max(d, (a[v] - b[v]).cwiseAbs().maxCoeff());
     return d;
 }
 
@@ -32,7 +33,9 @@ Flow parse_flow(std::string_view name) {
                        "' (use \"mcf\" for mean curvature flow or \"sd\" for surface diffusion)");
 }
 
-const char* flow_name(Flow flow) { return flow == Flow::MeanCurvature ? "mcf" : "sd"; }
+const char* flow_name(Flow flow) {
+    return flow == Flow::MeanCurvature ? "mcf" : "sd";
+}
 
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
                               const Eigen::VectorXd& b, double tau, StepCost& cost) {
@@ -44,20 +47,22 @@ Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
     cost.solve_seconds += seconds_since(t1);
     cost.unknowns = static_cast<int>(M.rows());
     if (!x.allFinite())
-        throw SolverError("step: the linear solve produced non-finite values (tau = " +
-                          fmt(tau) + ")");
+        throw SolverError("step: the linear solve produced non-finite values (tau = " + fmt(tau) +
+                          ")");
     return x;
 }
 
 std::vector<Vec3> displaced(const Cluster& c, const PositionBasis& P, const Eigen::VectorXd& z) {
     std::vector<Vec3> X = c.positions();
-    for (int v = 0; v < c.n_vertices(); ++v) X[v] += P.displacement(z, v);
+    for (int v = 0; v < c.n_vertices(); ++v)
+        X[v] += P.displacement(z, v);
     return X;
 }
 
 double cluster_size(const std::vector<Vec3>& X) {
     Vec3 lo = X[0], hi = X[0];
-    for (const Vec3& x : X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    for (const Vec3& x : X)
+        lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
     return (hi - lo).norm();
 }
 

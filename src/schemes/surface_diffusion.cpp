@@ -8,8 +8,8 @@
 namespace froth {
 
 void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
-                 const PositionBasis& P, double tau, const FacetNormals* lagged,
-                 SparseBuilder& M, Eigen::VectorXd& rhs) {
+                 const PositionBasis& P, double tau, const FacetNormals* lagged, SparseBuilder& M,
+                 Eigen::VectorXd& rhs) {
     const int n = P.size(), size = n + Z.n_reduced;
     M.begin(size, size);
     add_position_stiffness(c, P, lagged, M);
@@ -20,7 +20,8 @@ void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
         const double beta = g.facet_beta.empty() ? 1.0 : g.facet_beta[i][facet[i]];
         ++facet[i];
         int p[3];
-        for (int a = 0; a < 3; ++a) p[a] = c.pair_index(t[a], i);
+        for (int a = 0; a < 3; ++a)
+            p[a] = c.pair_index(t[a], i);
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b)
                 for (int x = Z.start[p[a]]; x < Z.start[p[a] + 1]; ++x)
@@ -37,7 +38,6 @@ void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
     rhs = Eigen::VectorXd::Zero(size);
     set_minus_stiffness_rhs(c, P, lagged, rhs);
 }
-
 
 SurfaceDiffusionScheme::SurfaceDiffusionScheme(bool exact_volumes)
     : Scheme(Factorization::LU), exact_(exact_volumes) {}

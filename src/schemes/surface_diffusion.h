@@ -26,8 +26,8 @@ namespace froth {
 
 /// The saddle point of one step into M and rhs (positions first, then k).
 void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
-                 const PositionBasis& P, double tau, const FacetNormals* lagged,
-                 SparseBuilder& M, Eigen::VectorXd& rhs);
+                 const PositionBasis& P, double tau, const FacetNormals* lagged, SparseBuilder& M,
+                 Eigen::VectorXd& rhs);
 
 class SurfaceDiffusionScheme final : public Scheme {
   public:
@@ -51,7 +51,8 @@ class SurfaceDiffusionScheme final : public Scheme {
     Eigen::VectorXd solve_exact_volumes(const Cluster& c, double tau, const PositionBasis& P,
                                         const FixedPointOptions& fp, StepCost& cost);
     bool exact_;
-    std::shared_ptr<const KappaBasis> Z_; ///< of the cluster's topology (immutable: shared by copies)
+    std::shared_ptr<const KappaBasis>
+        Z_; ///< of the cluster's topology (immutable: shared by copies)
     // Set during a volume-exact step: the kappa rows assemble_system adds.
     const Eigen::VectorXd* kappa_rhs_ = nullptr;
     // The volume-exact step's Newton-corrected system: the averaged normals' derivative C and

@@ -39,15 +39,20 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, do
     const int n = c.n_vertices(), nb = c.n_bodies();
     std::vector<Vec3> dX(n, Vec3::Zero());
     Eigen::VectorXd z_last;
-    if (last_end_ == c.positions() && last_z_.size() > 0) { // this step continues the last one
+    // This step continues the last one (the same positions and unknowns: fixing vertices
+    // changes the unknowns, not the positions).
+    if (last_end_ == c.positions() && last_z_.size() > 0 && Z_ &&
+        last_z_.size() == P.size() + Z_->n_reduced) {
         z_last = last_z_;
         z_last.head(P.size()) *= tau / last_tau_;
-        for (int v = 0; v < n; ++v) dX[v] = P.displacement(z_last, v);
+        for (int v = 0; v < n; ++v)
+            dX[v] = P.displacement(z_last, v);
     }
     Anderson anderson(6); // r > 1 only, where Newton's method on (3.9) runs inside each solve
     const std::vector<double> V0 = body_volumes(c);
     Eigen::VectorXd change_needed(nb), swept(nb); // V* - V0; what the pairs' motion must sweep
-    for (int b = 0; b < nb; ++b) change_needed[b] = c.target_volumes()[b] - V0[b];
+    for (int b = 0; b < nb; ++b)
+        change_needed[b] = c.target_volumes()[b] - V0[b];
     swept = change_needed;
     struct Reset { // the pointers must not outlive this call, whatever it throws
         SurfaceDiffusionScheme& s;
@@ -86,23 +91,28 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, do
             return z;
         }
         if (report.volume_iterations >= kMaxVolumeIterations)
-            throw ConvergenceError("step: the volume-exact surface diffusion step did not converge in " +
-                                   std::to_string(report.volume_iterations) + " solves (volume error " +
-                                   fmt(report.volume_error) + ", tau = " + fmt(tau) +
-                                   "); the cluster is unchanged (try a smaller tau, or exact_volumes = false)");
+            throw ConvergenceError(
+                "step: the volume-exact surface diffusion step did not converge in " +
+                std::to_string(report.volume_iterations) + " solves (volume error " +
+                fmt(report.volume_error) + ", tau = " + fmt(tau) +
+                "); the cluster is unchanged (try a smaller tau, or exact_volumes = false)");
         // The next solve, with the weights w(dz), must sweep what the films must carry: the
         // needed change less what the lids add beyond the films (curved walls), plus what this
         // solve missed of its own target (round-off of an ill-conditioned solve).
         const Eigen::VectorXd missed = swept - pair_sweep(c, w, dz);
-        swept = change_needed - (Eigen::Map<const Eigen::VectorXd>(V.data(), nb) -
-                                 Eigen::Map<const Eigen::VectorXd>(V0.data(), nb) -
-                                 pair_sweep(c, simpson_pair_weights(c, dz), dz)) + missed;
+        swept = change_needed -
+                (Eigen::Map<const Eigen::VectorXd>(V.data(), nb) -
+                 Eigen::Map<const Eigen::VectorXd>(V0.data(), nb) -
+                 pair_sweep(c, simpson_pair_weights(c, dz), dz)) +
+                missed;
         if (c.nonlinear()) { // Anderson on (dX, swept): Newton's C is not used there
             Eigen::VectorXd x(3 * n + nb), f(3 * n + nb);
-            for (int v = 0; v < n; ++v) x.segment<3>(3 * v) = dX[v], f.segment<3>(3 * v) = dz[v] - dX[v];
+            for (int v = 0; v < n; ++v)
+                x.segment<3>(3 * v) = dX[v], f.segment<3>(3 * v) = dz[v] - dX[v];
             x.tail(nb).setZero(), f.tail(nb) = swept;
             const Eigen::VectorXd next = anderson.next(x, f);
-            for (int v = 0; v < n; ++v) dz[v] = next.segment<3>(3 * v);
+            for (int v = 0; v < n; ++v)
+                dz[v] = next.segment<3>(3 * v);
             swept = next.tail(nb);
         }
         dX = std::move(dz), z_last = std::move(z);

@@ -400,6 +400,44 @@ TEST(Lids, SphereWallLidIsTheSpherePatchInsideTheRim) {
     }
 }
 
+// The cylinder's lid patches are the triangles of the unrolled cylinder (Wall::fan_flux): a fan
+// over the rectangle theta in [t1, t2], s in [0, L] from its centre, rim points on its sides,
+// must give the flux of x through the patch, p . int n dA + R^2 (t2 - t1) L, exactly for every
+// rim resolution: R A is exact by construction, and p . S sums the flat triangles' vector areas
+// to that of the rim polygon, whose chords of the two arcs (translates along the axis, run in
+// opposite directions) cancel. The flat fan misses the patch's bulge.
+TEST(Lids, CylinderWallLidIsTheCylinderPatch) {
+    const Vec3 axis = Vec3(1, 2, 2) / 3;
+    const Vec3 e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+    const double R = 1.5, t1 = 0.3, t2 = 1.4, L = 0.8;
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(0.4, -1, 2)}) {
+        const WallPtr w = make_cylinder_wall(p, axis, R);
+        const auto at = [&](double t, double z) {
+            return Vec3(p + R * (std::cos(t) * e1 + std::sin(t) * e2) + z * axis);
+        };
+        // The exact flux: int (p + R n) . n dA = p . int n dA + R area; int n dA over the
+        // patch = R L (sin t2 - sin t1) e1 - R L (cos t2 - cos t1) e2.
+        const Vec3 n_area = R * L * ((std::sin(t2) - std::sin(t1)) * e1 - (std::cos(t2) - std::cos(t1)) * e2);
+        const double exact = p.dot(n_area) + R * R * (t2 - t1) * L;
+        for (int K : {4, 8, 16}) {
+            std::vector<Vec3> rim; // clockwise in (theta, s): the fan triangles face outward
+            for (int k = 0; k < K; ++k) rim.push_back(at(t1, L * k / K));
+            for (int k = 0; k < K; ++k) rim.push_back(at(t1 + (t2 - t1) * k / K, L));
+            for (int k = 0; k < K; ++k) rim.push_back(at(t2, L - L * k / K));
+            for (int k = 0; k < K; ++k) rim.push_back(at(t2 - (t2 - t1) * k / K, 0));
+            const Vec3 apex = at(0.5 * (t1 + t2), 0.5 * L);
+            double flux = 0, flat = 0;
+            for (std::size_t k = 0; k < rim.size(); ++k) {
+                const Vec3 &a = rim[k], &b = rim[(k + 1) % rim.size()];
+                flux += w->fan_flux(apex, a, b);
+                flat += 0.5 * apex.dot(b.cross(a)); // Wall::fan_flux, the flat triangle's
+            }
+            EXPECT_LT(std::abs(flux - exact), 1e-14 * exact) << "K = " << K;
+            EXPECT_GT(std::abs(flat - exact), 1e-3 * exact) << "the flat fan misses the bulge";
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // PositionBasis
 
