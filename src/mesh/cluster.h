@@ -8,6 +8,7 @@
 #include <Eigen/Geometry> // cross products
 
 #include "anisotropy/mobility.h"
+#include "core/types.h"
 #include "mesh/walls.h"
 
 #include <array>
@@ -16,9 +17,6 @@
 #include <vector>
 
 namespace froth {
-
-using Vec3 = Eigen::Vector3d;
-using Tri = std::array<int, 3>;
 
 /// The largest coordinate magnitude a cluster accepts: a volume is a sum of products of three
 /// coordinates, and 1e100 cubed is still finite.

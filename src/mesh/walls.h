@@ -4,6 +4,8 @@
 /// grad F != 0 there and normalises (the tangent plane and the first-order distance
 /// F / |grad F| do not depend on the scaling), so a user's F need not be a distance.
 
+#include "core/types.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
 
@@ -13,8 +15,6 @@
 #include <vector>
 
 namespace froth {
-
-using Vec3 = Eigen::Vector3d;
 
 class Wall {
   public:

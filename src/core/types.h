@@ -1,0 +1,13 @@
+#pragma once
+/// The value types every module shares: a point or vector of R^3 and a triangle's vertex ids.
+
+#include <Eigen/Core>
+
+#include <array>
+
+namespace froth {
+
+using Vec3 = Eigen::Vector3d;
+using Tri = std::array<int, 3>; ///< vertex ids, 0-based, in the facet's orientation
+
+} // namespace froth
