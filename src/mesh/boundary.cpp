@@ -40,6 +40,29 @@ int find_root(std::vector<int>& parent, int v) {
 
 } // namespace
 
+double Cluster::wall_tolerance() const {
+    // Vertices of the mesh are placed on the walls by the builders up to round-off; a user mesh
+    // gets a relative tolerance of 1e-6 of a typical edge length.
+    const double edge = std::sqrt(4 / std::sqrt(3.0) * initial_area_ / std::max(n_facets_, 1));
+    return 1e-6 * edge;
+}
+
+bool Cluster::on_common_wall(int a, int b) const {
+    const double tol = wall_tolerance();
+    for (const WallPtr& w : walls_)
+        if (w->distance(X_[a]) <= tol && w->distance(X_[b]) <= tol) return true;
+    return false;
+}
+
+bool Cluster::is_wire_edge(int a, int b) const {
+    if (a > b) std::swap(a, b);
+    const auto it = std::lower_bound(wire_edges_.begin(), wire_edges_.end(), std::pair{a, b},
+                                     [](const BoundaryEdge& e, const std::pair<int, int>& k) {
+                                         return std::pair{e.a, e.b} < k;
+                                     });
+    return it != wire_edges_.end() && it->a == a && it->b == b;
+}
+
 void Cluster::attach_walls() {
     const int n = n_vertices();
     freedom_.assign(n, 3);
@@ -48,10 +71,7 @@ void Cluster::attach_walls() {
     for (const BoundaryEdge& e : boundary_edges_)
         for (int v : {e.a, e.b})
             surface_of[v] = e.surface, edge_other[v] = v == e.a ? e.b : e.a;
-    // Vertices of the mesh are placed on the walls by the builders up to round-off; a user mesh
-    // gets a relative tolerance of 1e-6 of a typical edge length.
-    const double edge = std::sqrt(4 / std::sqrt(3.0) * initial_area_ / std::max(n_facets_, 1));
-    const double tol = 1e-6 * edge;
+    const double tol = wall_tolerance();
     for (int v = 0; v < n; ++v) {
         if (surface_of[v] < 0) continue;
         std::vector<Vec3> normals;

@@ -35,6 +35,9 @@ Cluster::Cluster(ClusterSpec spec) {
             initial_area_ += 0.5 * (X_[t[1]] - X_[t[0]]).cross(X_[t[2]] - X_[t[0]]).norm();
     }
     build_csr_lists(n_vertices(), vertex_surface, vs_start_, vs_list_);
+    fixed_.assign(n_vertices(), 0); // before the edges: a free edge between fixed vertices is a wire
+    for (int v : spec.fixed) fixed_[v] = 1;
+    n_fixed_ = static_cast<int>(std::count(fixed_.begin(), fixed_.end(), 1));
     for (int v = 0; v < n_vertices(); ++v)
         if (vs_start_[v] == vs_start_[v + 1])
             throw TopologyError("cluster: " + vertex_name(v) + " is not a corner of any facet");
@@ -51,8 +54,6 @@ Cluster::Cluster(ClusterSpec spec) {
     build_csr_lists(n_vertices(), vertex_edge, vj_start_, vj_list_);
     orient_bodies(spec.bodies);
     target_volumes_ = initial_volumes_;
-    fixed_.assign(n_vertices(), 0);
-    set_fixed(spec.fixed, true);
 }
 
 std::vector<int> Cluster::fixed_vertices() const {
@@ -68,6 +69,15 @@ void Cluster::set_fixed(const std::vector<int>& vertices, bool fixed) {
             throw InvalidInput(std::string(fixed ? "fix" : "unfix") + ": vertex " +
                                std::to_string(v + 1) + " does not exist (the "
                                "cluster has vertices 1.." + std::to_string(n_vertices()) + ")");
+    if (!fixed)
+        for (const BoundaryEdge& e : wire_edges_)
+            for (int v : {e.a, e.b})
+                if (std::find(vertices.begin(), vertices.end(), v) != vertices.end())
+                    throw InvalidInput("unfix: vertex " + std::to_string(v + 1) + " ends the free "
+                                       "boundary edge " + std::to_string(e.a + 1) + "-" +
+                                       std::to_string(e.b + 1) + " of surface " +
+                                       std::to_string(e.surface + 1) + ", which no wall holds "
+                                       "(a wire); it stays fixed");
     for (int v : vertices) fixed_[v] = fixed;
     n_fixed_ = static_cast<int>(std::count(fixed_.begin(), fixed_.end(), 1));
     ++assembly_revision_;

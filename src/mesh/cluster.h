@@ -34,10 +34,13 @@ struct ClusterSpec {
     /// signs so that every body is a closed, outward-oriented polyhedron.
     std::vector<std::vector<int>> bodies;
     /// External boundaries (seed (1.25)): every free boundary edge (an edge of one facet only)
-    /// must lie on one of them; its vertices are then constrained to the wall (3.10)/(3.11).
+    /// must lie on one of them, or be a wire (below); its vertices are then constrained to the
+    /// wall (3.10)/(3.11).
     std::vector<WallPtr> walls;
     /// Vertices held in place (Evolver's `fixed`): every scheme and minimize leave them where
-    /// they are (their displacement space is {0}, as the walls' is the tangent plane).
+    /// they are (their displacement space is {0}, as the walls' is the tangent plane). A free
+    /// boundary edge between two fixed vertices that lies on no wall is a wire: the film ends
+    /// there (a minimal surface spanning a frame needs no body).
     std::vector<int> fixed;
 };
 
@@ -154,7 +157,12 @@ class Cluster {
     std::vector<int> vertex_junction_edges(int v) const;
 
     const std::vector<WallPtr>& walls() const { return walls_; }
+    /// Free boundary edges on walls (the vertices attached to the walls).
     const std::vector<BoundaryEdge>& boundary_edges() const { return boundary_edges_; }
+    /// Free boundary edges between two fixed vertices on no wall: a wire the film spans
+    /// (Evolver's fixed edges; a film need not enclose a body then).
+    const std::vector<BoundaryEdge>& wire_edges() const { return wire_edges_; }
+    bool is_wire_edge(int a, int b) const;
     /// The walls (ids into walls()) that vertex v is attached to; empty unless v is on a free
     /// boundary edge. Fixed when the cluster is made.
     std::vector<int> vertex_walls(int v) const;
@@ -169,7 +177,8 @@ class Cluster {
     /// The fixed vertices in increasing order.
     std::vector<int> fixed_vertices() const;
     /// Fixes (or frees) the given vertices; the assembly revision changes, since the schemes'
-    /// unknowns do. \throw InvalidInput for an id out of range (nothing changes then).
+    /// unknowns do. \throw InvalidInput for an id out of range or for freeing a vertex of a
+    /// wire edge (nothing changes then).
     void set_fixed(const std::vector<int>& vertices, bool fixed);
 
     /// Model time, advanced by the schemes.
@@ -199,6 +208,10 @@ class Cluster {
     void check_tension_triangles(const char* op) const;
     void orient_bodies(const std::vector<std::vector<int>>& body_surfaces);
     void attach_walls();
+    /// How far from a wall a vertex may be and count as on it.
+    double wall_tolerance() const;
+    /// True if both vertices lie on one wall (within wall_tolerance).
+    bool on_common_wall(int a, int b) const;
     void find_lids(Body& body) const;
 
     std::vector<Vec3> X_;
@@ -211,6 +224,7 @@ class Cluster {
     std::vector<int> vs_start_, vs_list_, vj_start_, vj_list_;
     std::vector<WallPtr> walls_;
     std::vector<BoundaryEdge> boundary_edges_;
+    std::vector<BoundaryEdge> wire_edges_; // sorted by (a, b), a < b
     std::vector<int> vw_start_, vw_list_, freedom_; // CSR vertex -> walls; free directions
     std::vector<char> fixed_;                       // per vertex
     int n_fixed_ = 0;

@@ -93,12 +93,18 @@ void Cluster::classify_edges() {
         const int count = static_cast<int>(j - i);
         const std::string edge = edge_name(h[i].lo, h[i].hi);
         if (count == 1) {
-            if (walls_.empty())
+            const int a = h[i].lo, b = h[i].hi;
+            if (fixed_[a] && fixed_[b] && !on_common_wall(a, b)) {
+                wire_edges_.push_back({a, b, h[i].surface}); // h is sorted by (lo, hi)
+            } else if (walls_.empty()) {
                 throw TopologyError("cluster: " + edge + " of surface " +
                                     std::to_string(h[i].surface + 1) +
                                     " is a free boundary edge (in one facet only) and no wall is"
-                                    " attached; close the surface or give walls (froth.plane, ...)");
-            boundary_edges_.push_back({h[i].lo, h[i].hi, h[i].surface});
+                                    " attached; close the surface, give walls (froth.plane, ...)"
+                                    " or fix both its vertices (a wire)");
+            } else {
+                boundary_edges_.push_back({a, b, h[i].surface});
+            }
         } else if (count == 2) {
             if (h[i].surface != h[i + 1].surface)
                 throw TopologyError("cluster: " + edge + " is shared by exactly two surfaces (" +
@@ -193,12 +199,16 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
             std::vector<const HalfEdge*> mine;
             for (; j < h.size() && h[j].lo == h[i].lo && h[j].hi == h[i].hi; ++j)
                 if (sign.count(h[j].surface)) mine.push_back(&h[j]);
-            const bool on_wall = j - i == 1 && !walls_.empty(); // a free boundary edge
+            const bool on_wall = j - i == 1 && !walls_.empty() && // a free boundary edge
+                                 !is_wire_edge(h[i].lo, h[i].hi);
             if (!mine.empty() && mine.size() != 2 && !(on_wall && mine.size() == 1))
                 throw TopologyError("cluster: " + name + " is not closed: " +
                                     edge_name(h[i].lo, h[i].hi) + " is in " +
                                     std::to_string(mine.size()) + " of its facets, not 2" +
-                                    (walls_.empty() ? "" : " (and is not on a wall)"));
+                                    (walls_.empty() ? "" : " (and is not on a wall)") +
+                                    (is_wire_edge(h[i].lo, h[i].hi)
+                                         ? "; a wire (fixed vertices) does not close a body"
+                                         : ""));
             if (mine.size() == 2 && mine[0]->surface != mine[1]->surface)
                 links.emplace_back(mine[0], mine[1]);
             i = j;

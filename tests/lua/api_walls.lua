@@ -234,7 +234,8 @@ check_error("froth.Wall expected", p.F, 5, {1, 2, 3})
 
 local V, F = box({0, 0, 0}, {1, 1, 1}, 1, OPEN)
 check_error("is a free boundary edge (in one facet only) and no wall is attached; close the " ..
-            "surface or give walls", froth.cluster, {vertices = V, surfaces = {F}})
+            "surface, give walls (froth.plane, ...) or fix both its vertices (a wire)", froth.cluster,
+            {vertices = V, surfaces = {F}})
 check_error("cluster: walls must be a wall or an array of walls (froth.plane{...}, ...), got number",
             froth.cluster, {vertices = V, surfaces = {F}, walls = 3})
 check_error("cluster: walls must be a wall or an array of walls (froth.plane{...}, ...), got string",
