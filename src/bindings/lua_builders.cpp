@@ -8,6 +8,7 @@
 #include "bindings/lua_walls.h"
 #include "core/errors.h"
 #include "io/msh_reader.h"
+#include "io/text_file.h"
 #include "bindings/luax.h"
 
 #ifdef FROTH_HAVE_GMSH
@@ -142,9 +143,29 @@ int l_cluster(lua_State* L) {
     });
 }
 
-/// froth.read(path[, {walls}]): an MSH file (io/msh_reader.h; no gmsh needed).
+/// froth.read(path[, {walls}]): an MSH file (io/msh_reader.h; no gmsh needed), or a Surface
+/// Evolver datafile (*.fe: lua/froth/evolver_fe.lua).
 int l_read(lua_State* L) {
     const std::string path = luaL_checkstring(L, 1);
+    if (path.size() > 3 && path.compare(path.size() - 3, 3, ".fe") == 0) {
+        // Read here with the file limits of every reader (regular files only, at most 64 MiB:
+        // Evolver's datafiles are small), parsed in Lua.
+        std::string text;
+        guarded(L, [&] {
+            text = io::read_text_file(path, std::uintmax_t{64} << 20, "read");
+            return 0;
+        });
+        lua_settop(L, 2);
+        lua_getglobal(L, "require");
+        lua_pushstring(L, "froth.evolver_fe");
+        lua_call(L, 1, 1);
+        lua_getfield(L, -1, "from_text");
+        lua_pushlstring(L, text.data(), text.size());
+        lua_pushvalue(L, 1);
+        lua_pushvalue(L, 2);
+        lua_call(L, 3, 1);
+        return 1;
+    }
     Options o(L, 2, "read", true);
     o.push("walls");
     std::vector<WallPtr> walls = read_walls(L, -1, "read: walls");

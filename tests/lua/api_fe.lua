@@ -1,0 +1,85 @@
+-- froth.read of Surface Evolver datafiles (*.fe, lua/froth/evolver_fe.lua). Counts, areas and
+-- volumes right after reading must be Evolver's; golden numbers from evolver-nox 2.70 on the
+-- same layouts (Debian's evolver-doc quad.fe and cube.fe, of which tests/data/fe has froth's
+-- own copies), printed by
+--   evolver -x -f ev_counts.cmd quad.fe
+-- with ev_counts.cmd = printf "vertices %d facets %d area %.15g\n", vertex_count, facet_count,
+-- total_area; gogo; (the same printf); quit;
+--   quad.fe: vertices 5 facets 4 area 4.47213595499958; after gogo 145 / 256 / 4.31820294721113
+--   cube.fe: vertices 14 facets 24 area 6;              after gogo 194 / 384 / 4.85445981487675
+local T = require("froth.test")
+local here = debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$") or "."
+local dir = here .. "/../data/fe/"
+
+-- The skew quadrilateral: one face of four fixed edges, triangulated about its centroid.
+local q = froth.read(dir .. "skew_quad.fe")
+T.assert_equal(q:info().vertices, 5, "quad: Evolver's 5 vertices (4 + the centroid)")
+T.assert_equal(q:info().facets, 4, "quad: Evolver's 4 facets")
+T.assert_equal(q:info().bodies, 0, "quad: a film without a body")
+T.assert_near(q:area(), 4.47213595499958, 1e-13, "quad: Evolver's area after reading")
+T.assert_equal(#q:fixed(), 4, "quad: the four fixed corners")
+-- Its gogo refines three times (256 facets, as Evolver's); froth then minimises fully.
+for _ = 1, 3 do q:refine() end
+T.assert_equal(q:info().vertices, 145, "quad refined: Evolver's 145 vertices")
+T.assert_equal(q:info().facets, 256, "quad refined: Evolver's 256 facets")
+local r = q:minimize{tol = 1e-8}
+T.assert_true(r.converged, "quad: minimize converges", r.stop_reason)
+print(("quad: froth %.12f, Evolver's gogo 4.31820294721113 (relative %.1e)"):format(q:area(),
+      (q:area() - 4.31820294721113) / 4.31820294721113))
+T.assert_true(math.abs(q:area() - 4.31820294721113) < 1e-4 * 4.318, "quad: Evolver's area after gogo")
+
+-- A box of six quadrilaterals (one given the other way round), tension 1.5, volume target 2,
+-- with PARAMETER, #define, expressions and both comment styles.
+local b = froth.read(dir .. "box_volume.fe")
+T.assert_equal(b:info().vertices, 14, "box: 8 + 6 centroids")
+T.assert_equal(b:info().facets, 24, "box: 24 facets")
+T.assert_equal(b:info().surfaces, 1, "box: the six faces are one film")
+T.assert_near(b:area(), 6, 1e-14, "box: area 6")
+T.assert_near(b:energy(), 9, 1e-14, "box: energy 1.5 x 6 (tension and density)")
+T.assert_near(b:volumes()[1], 1, 1e-14, "box: volume 1")
+T.assert_near(b:target_volumes()[1], 2, 0, "box: the datafile's volume is the target")
+b:refine(); b:refine()
+r = b:minimize{tol = 1e-6}
+local sphere = 1.5 * 4 * math.pi * (3 * 2 / (4 * math.pi)) ^ (2 / 3)
+T.assert_true(r.converged and T.rel(b:volumes()[1], 2) < 1e-12, "box: minimize reaches volume 2 exactly")
+T.assert_true(b:energy() > sphere and b:energy() < 1.01 * sphere, "box: near the sphere of volume 2",
+              b:energy() .. " vs " .. sphere)
+
+-- Bad files: one clear line naming the file, the line and what is wrong.
+local function with_file(text, f)
+  local path = os.tmpname() .. ".fe"
+  local h = assert(io.open(path, "w"))
+  h:write(text)
+  h:close()
+  local ok, err = pcall(f, path)
+  os.remove(path)
+  return ok, err
+end
+local function refused(text, expected, what)
+  local ok, err = with_file(text, froth.read)
+  T.assert_true(not ok and tostring(err):find(expected, 1, true) ~= nil, what, tostring(err))
+end
+local tri = "vertices\n1 0 0 0 fixed\n2 1 0 0 fixed\n3 0 1 0 fixed\nedges\n1 1 2 fixed\n2 2 3 fixed\n3 3 1 fixed\n"
+refused("constraint 1\nformula: z = 0\n" .. tri, ":1: 'constraint' (constraints (walls given as level sets)) is outside the .fe subset",
+        "a constraint is refused with its line")
+refused(tri:gsub("1 0 0 0 fixed", "1 0 0 0 boundary 1"), ":2: the attribute 'boundary' is outside the .fe subset",
+        "an attribute froth does not model")
+refused(tri .. "faces\n1 1 2 -3\n", "face 1: edge -3 does not start where edge 2 ends", "a broken edge loop")
+refused(tri .. "faces\n1 1 2\n", "face 1 needs at least 3 edges", "a face of two edges")
+refused(tri .. "faces\n1 1 2 4\n", "face 1 uses edge 4, which is not defined", "an undefined edge")
+refused(tri .. "faces\n1 1 2 3\n1 1 2 3\n", ":11: face 1 is defined twice", "a duplicate id")
+refused("vertices\n1 0 0 zz\n", ":2: the attribute 'zz' is outside the .fe subset", "a word where a coordinate should be")
+refused("vertices\n1 0 0\n", ":2: vertex 1 needs 3 coordinates, got 2", "a missing coordinate")
+refused("vertices\n1 0 0 1/(\n", "'1/(' is not a number or an expression", "a broken expression")
+refused(tri .. "faces\n1 1 2 3\nbodies\n1 1 volume 1\n", "a wire (fixed vertices) does not close a body",
+        "a body closed by wires")
+refused("/* never closed\nvertices\n", "a comment /* is not closed", "an open comment")
+local ok, err = pcall(froth.read, "/nonexistent/x.fe")
+T.assert_true(not ok and tostring(err):find("read: cannot open '/nonexistent/x.fe': No such file or directory", 1, true), "a missing file", tostring(err))
+local folder = os.tmpname() .. ".fe"
+assert(os.execute("mkdir " .. folder))
+ok, err = pcall(froth.read, folder)
+os.execute("rmdir " .. folder)
+T.assert_true(not ok and tostring(err):find("read: cannot open", 1, true), "a folder is not read",
+              tostring(err))
+T.summary()
