@@ -66,6 +66,18 @@ local function evaluator(path, params)
 end
 
 local sections = {vertices = true, edges = true, faces = true, facets = true, bodies = true}
+-- Model declarations that say what froth does anyway.
+local ignored = {soapfilm = true, linear = true}
+local singular = {vertices = "vertex", edges = "edge", faces = "face", bodies = "body"}
+local attribute_list = {vertices = "fixed", edges = "fixed, color", faces = "tension, density, color",
+                        bodies = "volume"}
+-- The attributes each section may carry (colors are display only and ignored).
+local allowed = {
+  vertices = {fixed = true},
+  edges = {fixed = true, color = true},
+  faces = {tension = true, density = true, color = true, frontcolor = true, backcolor = true},
+  bodies = {volume = true},
+}
 
 --- Parses the datafile: {vertices = {{x, fixed}}, edges = {{a, b, fixed}}, faces = {{loop,
 --- tension, line}}, bodies = {{faces, volume, line}}}, each keyed by its Evolver id.
@@ -93,6 +105,8 @@ local function parse(path, lines)
       section = nil
     elseif sections[key] then
       section = key == "facets" and "faces" or key
+    elseif ignored[key] and #t == 1 then
+      section = nil
     elseif unsupported[key] ~= nil or (section == nil and not tonumber(key)) then
       fail(path, n, "'%s' (%s) is outside the .fe subset froth reads (vertices, edges, faces, "
            .. "bodies, fixed, tension, volume, PARAMETER, #define)", t[1], unsupported[key] or "unknown keyword")
@@ -110,6 +124,10 @@ local function parse(path, lines)
       end
       while t[i] do
         local a = t[i]:lower()
+        if not allowed[section][a] then
+          fail(path, n, "the attribute '%s' of %s %s is outside the .fe subset froth reads (%s)",
+               t[i], section == "edges" and "an" or "a", singular[section], attribute_list[section])
+        end
         if a == "fixed" then attrs.fixed = true
         elseif a == "tension" or a == "density" or a == "volume" then
           if not t[i + 1] then fail(path, n, "'%s' needs a value", t[i]) end
@@ -117,14 +135,11 @@ local function parse(path, lines)
           i = i + 1
         elseif a == "color" or a == "frontcolor" or a == "backcolor" then
           i = i + 1 -- display only
-        else
-          fail(path, n, "the attribute '%s' is outside the .fe subset froth reads (fixed, tension, "
-               .. "density, volume, color)", t[i])
         end
         i = i + 1
       end
       local store = data[section]
-      if store[id] then fail(path, n, "%s %d is defined twice", section:sub(1, -2), id) end
+      if store[id] then fail(path, n, "%s %d is defined twice", singular[section], id) end
       if section == "vertices" then
         if #numbers ~= 3 then fail(path, n, "vertex %d needs 3 coordinates, got %d", id, #numbers) end
         store[id] = {x = {eval(numbers[1], n), eval(numbers[2], n), eval(numbers[3], n)},
@@ -238,6 +253,11 @@ function M.from_text(text, path, opts)
   for id, e in pairs(data.edges) do
     for _, v in ipairs{e[1], e[2]} do
       if not vid[v] then fail(path, e.line, "edge %d uses vertex %s, which is not defined", id, tostring(v)) end
+      -- froth fixes vertices, not edges: a fixed edge must have fixed ends (a wire).
+      if e.fixed and not data.vertices[v].fixed then
+        fail(path, e.line, "edge %d is fixed but its vertex %d is not (froth holds vertices; fix "
+             .. "both ends of a fixed edge)", id, v)
+      end
     end
   end
   local order, loops = {}, {}

@@ -62,13 +62,15 @@ end
 local tri = "vertices\n1 0 0 0 fixed\n2 1 0 0 fixed\n3 0 1 0 fixed\nedges\n1 1 2 fixed\n2 2 3 fixed\n3 3 1 fixed\n"
 refused("constraint 1\nformula: z = 0\n" .. tri, ":1: 'constraint' (constraints (walls given as level sets)) is outside the .fe subset",
         "a constraint is refused with its line")
-refused(tri:gsub("1 0 0 0 fixed", "1 0 0 0 boundary 1"), ":2: the attribute 'boundary' is outside the .fe subset",
+refused((tri:gsub("1 0 0 0 fixed", "1 0 0 0 boundary 1")), ":2: the attribute 'boundary' of a vertex is outside the .fe subset",
         "an attribute froth does not model")
+refused((tri:gsub("1 1 2 fixed", "1 1 2 tension 2")), ":6: the attribute 'tension' of an edge", "an edge tension (the string model)")
+refused((tri:gsub("2 1 0 0 fixed", "2 1 0 0")), ":6: edge 1 is fixed but its vertex 2 is not", "a fixed edge with a free end")
 refused(tri .. "faces\n1 1 2 -3\n", "face 1: edge -3 does not start where edge 2 ends", "a broken edge loop")
 refused(tri .. "faces\n1 1 2\n", "face 1 needs at least 3 edges", "a face of two edges")
 refused(tri .. "faces\n1 1 2 4\n", "face 1 uses edge 4, which is not defined", "an undefined edge")
 refused(tri .. "faces\n1 1 2 3\n1 1 2 3\n", ":11: face 1 is defined twice", "a duplicate id")
-refused("vertices\n1 0 0 zz\n", ":2: the attribute 'zz' is outside the .fe subset", "a word where a coordinate should be")
+refused("vertices\n1 0 0 zz\n", ":2: the attribute 'zz' of a vertex is outside the .fe subset", "a word where a coordinate should be")
 refused("vertices\n1 0 0\n", ":2: vertex 1 needs 3 coordinates, got 2", "a missing coordinate")
 refused("vertices\n1 0 0 1/(\n", "'1/(' is not a number or an expression", "a broken expression")
 refused(tri .. "faces\n1 1 2 3\nbodies\n1 1 volume 1\n", "a wire (fixed vertices) does not close a body",
