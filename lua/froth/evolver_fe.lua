@@ -18,10 +18,10 @@ local unsupported = {
   quantity = "named quantities", method_instance = "method instances",
   torus = "the torus model", torus_filled = "the torus model", periods = "the torus model",
   symmetry_group = "symmetry groups", gravity_constant = "gravity", gravity = "gravity",
-  string = "the string model", soapfilm = nil, lagrange_order = "Lagrange elements",
+  string = "the string model", lagrange_order = "Lagrange elements",
   space_dimension = "other space dimensions", simplex_representation = "the simplex model",
   quadratic = "the quadratic model", volconst = "volconst", content = "constraint contents",
-  energy = "constraint energies", color = nil, density = nil, tension = nil,
+  energy = "constraint energies",
 }
 
 local function fail(path, line, fmt, ...)
@@ -79,6 +79,80 @@ local allowed = {
   bodies = {volume = true},
 }
 
+--- PARAMETER name = value or #define name value: stores the value in params.
+local function read_definition(path, n, t, params, eval)
+  local name, value
+  if t[1]:lower() == "parameter" then
+    name, value = table.concat(t, " ", 2):match("^([%a_][%w_]*)%s*=%s*(.-)%s*$")
+    if not name then fail(path, n, "PARAMETER needs 'name = value'") end
+    value = value:gsub("%s+", "")
+  else
+    name, value = t[2], t[3]
+    if not (name and value) then fail(path, n, "#define needs a name and a value") end
+  end
+  params[name:lower()] = eval(value, n)
+end
+
+--- The attributes of an element line from token i on: {fixed, tension, volume}.
+local function read_attributes(path, n, t, i, section, eval)
+  local attrs = {}
+  while t[i] do
+    local a = t[i]:lower()
+    if not allowed[section][a] then
+      fail(path, n, "the attribute '%s' of %s %s is outside the .fe subset froth reads (%s)",
+           t[i], section == "edges" and "an" or "a", singular[section], attribute_list[section])
+    end
+    if a == "fixed" then
+      attrs.fixed = true
+    elseif a == "tension" or a == "density" or a == "volume" then
+      if not t[i + 1] then fail(path, n, "'%s' needs a value", t[i]) end
+      attrs[a == "density" and "tension" or a] = eval(t[i + 1], n)
+      i = i + 1
+    else
+      i = i + 1 -- a color: display only
+    end
+    i = i + 1
+  end
+  return attrs
+end
+
+--- One element line of a section: its id and record.
+local function read_element(path, n, t, section, params, eval)
+  local id = math.tointeger(tonumber(t[1]))
+  if not id or id < 1 then fail(path, n, "expected an element id, got '%s'", t[1]) end
+  -- Numbers (or expressions) first, then attributes: a bare word that is not a parameter or a
+  -- constant starts the attributes.
+  local i, numbers = 2, {}
+  while t[i] do
+    local word = t[i]:match("^[%a_][%w_]*$")
+    if word and params[word:lower()] == nil and word ~= "pi" and word ~= "e" then break end
+    numbers[#numbers + 1] = t[i]
+    i = i + 1
+  end
+  local attrs = read_attributes(path, n, t, i, section, eval)
+  if section == "vertices" then
+    if #numbers ~= 3 then fail(path, n, "vertex %d needs 3 coordinates, got %d", id, #numbers) end
+    return id, {x = {eval(numbers[1], n), eval(numbers[2], n), eval(numbers[3], n)},
+                fixed = attrs.fixed, line = n}
+  end
+  local ids = {}
+  for k, x in ipairs(numbers) do
+    ids[k] = math.tointeger(eval(x, n))
+    if not ids[k] or ids[k] == 0 or (section == "edges" and ids[k] < 0) then
+      fail(path, n, "'%s' is not a%s %s id", x, section == "edges" and "" or " signed",
+           section == "edges" and "vertex" or section == "faces" and "edge" or "face")
+    end
+  end
+  if section == "edges" then
+    if #ids ~= 2 then fail(path, n, "edge %d needs 2 vertices, got %d", id, #ids) end
+    return id, {ids[1], ids[2], fixed = attrs.fixed, line = n}
+  elseif section == "faces" then
+    if #ids < 3 then fail(path, n, "face %d needs at least 3 edges", id) end
+    return id, {loop = ids, tension = attrs.tension or 1, line = n}
+  end
+  return id, {faces = ids, volume = attrs.volume, line = n}
+end
+
 --- Parses the datafile: {vertices = {{x, fixed}}, edges = {{a, b, fixed}}, faces = {{loop,
 --- tension, line}}, bodies = {{faces, volume, line}}}, each keyed by its Evolver id.
 local function parse(path, lines)
@@ -91,17 +165,7 @@ local function parse(path, lines)
     local key = t[1]:lower()
     if key == "read" then break end
     if key == "parameter" or key == "#define" then
-      local name, value
-      if key == "parameter" then
-        local rest = table.concat(t, " ", 2)
-        name, value = rest:match("^([%a_][%w_]*)%s*=%s*(.-)%s*$")
-        if not name then fail(path, n, "PARAMETER needs 'name = value'") end
-        value = value:gsub("%s+", "")
-      else
-        name, value = t[2], t[3]
-        if not (name and value) then fail(path, n, "#define needs a name and a value") end
-      end
-      params[name:lower()] = eval(value, n)
+      read_definition(path, n, t, params, eval)
       section = nil
     elseif sections[key] then
       section = key == "facets" and "faces" or key
@@ -111,57 +175,9 @@ local function parse(path, lines)
       fail(path, n, "'%s' (%s) is outside the .fe subset froth reads (vertices, edges, faces, "
            .. "bodies, fixed, tension, volume, PARAMETER, #define)", t[1], unsupported[key] or "unknown keyword")
     else
-      local id = math.tointeger(tonumber(key))
-      if not id or id < 1 then fail(path, n, "expected an element id, got '%s'", t[1]) end
-      -- Numbers (or expressions) first, then attributes: a bare word that is not a parameter
-      -- or a constant starts the attributes.
-      local i, attrs, numbers = 2, {}, {}
-      while t[i] do
-        local word = t[i]:match("^[%a_][%w_]*$")
-        if word and params[word:lower()] == nil and word ~= "pi" and word ~= "e" then break end
-        numbers[#numbers + 1] = t[i]
-        i = i + 1
-      end
-      while t[i] do
-        local a = t[i]:lower()
-        if not allowed[section][a] then
-          fail(path, n, "the attribute '%s' of %s %s is outside the .fe subset froth reads (%s)",
-               t[i], section == "edges" and "an" or "a", singular[section], attribute_list[section])
-        end
-        if a == "fixed" then attrs.fixed = true
-        elseif a == "tension" or a == "density" or a == "volume" then
-          if not t[i + 1] then fail(path, n, "'%s' needs a value", t[i]) end
-          attrs[a == "density" and "tension" or a] = eval(t[i + 1], n)
-          i = i + 1
-        elseif a == "color" or a == "frontcolor" or a == "backcolor" then
-          i = i + 1 -- display only
-        end
-        i = i + 1
-      end
-      local store = data[section]
-      if store[id] then fail(path, n, "%s %d is defined twice", singular[section], id) end
-      if section == "vertices" then
-        if #numbers ~= 3 then fail(path, n, "vertex %d needs 3 coordinates, got %d", id, #numbers) end
-        store[id] = {x = {eval(numbers[1], n), eval(numbers[2], n), eval(numbers[3], n)},
-                     fixed = attrs.fixed, line = n}
-      elseif section == "edges" then
-        if #numbers ~= 2 then fail(path, n, "edge %d needs 2 vertices, got %d", id, #numbers) end
-        store[id] = {math.tointeger(eval(numbers[1], n)), math.tointeger(eval(numbers[2], n)),
-                     fixed = attrs.fixed, line = n}
-      else
-        local list = {}
-        for k, s in ipairs(numbers) do
-          list[k] = math.tointeger(eval(s, n))
-          if not list[k] or list[k] == 0 then fail(path, n, "'%s' is not a signed %s id", s,
-                                                    section == "faces" and "edge" or "face") end
-        end
-        if section == "faces" then
-          if #list < 3 then fail(path, n, "face %d needs at least 3 edges", id) end
-          store[id] = {loop = list, tension = attrs.tension or 1, line = n}
-        else
-          store[id] = {faces = list, volume = attrs.volume, line = n}
-        end
-      end
+      local id, record = read_element(path, n, t, section, params, eval)
+      if data[section][id] then fail(path, n, "%s %d is defined twice", singular[section], id) end
+      data[section][id] = record
     end
   end
   return data
@@ -233,6 +249,34 @@ local function surfaces_of(path, loops, order, line_of)
   return groups, group, flip
 end
 
+--- froth's bodies from the datafile's: the films (face groups) of their faces, each whole;
+--- returns the bodies' surface lists and their target volumes (nil: keep the volume).
+local function bodies_of(path, data, groups, group)
+  local bodies, volumes = {}, {}
+  local bids = {}
+  for id in pairs(data.bodies) do bids[#bids + 1] = id end
+  table.sort(bids)
+  for _, id in ipairs(bids) do
+    local b, set, list = data.bodies[id], {}, {}
+    for _, sf in ipairs(b.faces) do
+      local g = group[math.abs(sf)]
+      if not g then fail(path, b.line, "body %d uses face %d, which is not defined", id, math.abs(sf)) end
+      if not set[g] then set[g] = 0; list[#list + 1] = g end
+      set[g] = set[g] + 1
+    end
+    for _, g in ipairs(list) do
+      if set[g] ~= #groups[g].faces then
+        fail(path, b.line, "body %d uses %d of the %d faces of one film (faces joined across "
+             .. "edges of two faces); froth's bodies are bounded by whole films", id, set[g], #groups[g].faces)
+      end
+    end
+    table.sort(list)
+    bodies[#bodies + 1] = list
+    volumes[#bodies] = b.volume
+  end
+  return bodies, volumes
+end
+
 --- The cluster of an Evolver datafile's text (froth.read reads the file, with its limits, and
 --- calls this; path names the file in messages). opts is unused for now (walls would come from
 --- constraints, which this subset refuses).
@@ -297,29 +341,7 @@ function M.from_text(text, path, opts)
     end
     surfaces[gi] = {facets = tris, sigma = tension}
   end
-  -- Bodies: the surfaces of their faces, each whole.
-  local bodies, volumes = {}, {}
-  local bids = {}
-  for id in pairs(data.bodies) do bids[#bids + 1] = id end
-  table.sort(bids)
-  for _, id in ipairs(bids) do
-    local b, set, list = data.bodies[id], {}, {}
-    for _, sf in ipairs(b.faces) do
-      local g = group[math.abs(sf)]
-      if not g then fail(path, b.line, "body %d uses face %d, which is not defined", id, math.abs(sf)) end
-      if not set[g] then set[g] = 0; list[#list + 1] = g end
-      set[g] = set[g] + 1
-    end
-    for _, g in ipairs(list) do
-      if set[g] ~= #groups[g].faces then
-        fail(path, b.line, "body %d uses %d of the %d faces of one film (faces joined across "
-             .. "edges of two faces); froth's bodies are bounded by whole films", id, set[g], #groups[g].faces)
-      end
-    end
-    table.sort(list)
-    bodies[#bodies + 1] = list
-    volumes[#bodies] = b.volume
-  end
+  local bodies, volumes = bodies_of(path, data, groups, group)
   local c = froth.cluster{vertices = V, surfaces = surfaces, bodies = bodies,
                           fixed = #fixed > 0 and fixed or nil}
   for b, v in pairs(volumes) do c:set_volume(b, v) end

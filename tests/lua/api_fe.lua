@@ -45,6 +45,20 @@ T.assert_true(r.converged and T.rel(b:volumes()[1], 2) < 1e-12, "box: minimize r
 T.assert_true(b:energy() > sphere and b:energy() < 1.01 * sphere, "box: near the sphere of volume 2",
               b:energy() .. " vs " .. sphere)
 
+-- Clusters of several bodies: bench/evolver's two unit cubes (a double bubble) and three
+-- cells (four triple lines, two quadruple points), read as Evolver reads them (evolver -x -f
+-- ev_read.cmd FILE, printf of vertex_count, facet_count, total_area, body_count: 23 44 11 2
+-- and 37 76 16 3).
+local bench = here .. "/../../bench/evolver/"
+for _, case in ipairs{{"two_cubes.fe", 23, 44, 11, 2, "3/1/0/2"}, {"three_cells.fe", 37, 76, 16, 3, "6/4/2/3"}} do
+  local c = froth.read(bench .. case[1])
+  T.assert_equal(c:info().vertices, case[2], case[1] .. ": Evolver's vertices")
+  T.assert_equal(c:info().facets, case[3], case[1] .. ": Evolver's facets")
+  T.assert_near(c:area(), case[4], 1e-13, case[1] .. ": Evolver's area")
+  T.assert_equal(T.counts(c), case[6], case[1] .. ": surfaces / triple lines / quadruple points / bodies")
+  for b = 1, case[5] do T.assert_near(c:volumes()[b], 1, 1e-13, case[1] .. ": unit volumes") end
+end
+
 -- Bad files: one clear line naming the file, the line and what is wrong.
 local function with_file(text, f)
   local path = os.tmpname() .. ".fe"
