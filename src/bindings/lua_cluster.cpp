@@ -7,11 +7,13 @@
 #include "bindings/lua_queries.h"
 #include "bindings/lua_statics.h"
 #include "bindings/lua_walls.h"
+#include "core/format.h"
 #include "io/write.h"
 #include "run/evolve.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <unistd.h>
 
@@ -376,6 +378,11 @@ int l_evolve(lua_State* L) {
         };
     return guarded(L, [&] {
         const EvolveResult r = evolve(h.cluster, h.stepper, e);
+        // Ctrl-C is acknowledged where the user pressed it (Evolver does the same); scripts
+        // read stop_reason = "interrupted".
+        if (r.stop_reason == "interrupted")
+            std::fprintf(stderr, "evolve: interrupted (Ctrl-C) at step %d, t = %s; the cluster "
+                                 "keeps the state of that step\n", r.steps, fmt(r.last.t).c_str());
         push_report(L, r.last);
         set_integer(L, "steps", r.steps);
         set_number(L, "wall_s", r.wall_seconds);

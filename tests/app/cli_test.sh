@@ -110,5 +110,29 @@ LUA
     fi
 fi
 
+# Ctrl-C during an evolution stops it between steps, says where on stderr, and the script goes
+# on with stop_reason "interrupted" (no gmsh needed).
+cat >"$TMP/evolve.lua" <<'LUA'
+local c = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
+c:refine(); c:refine(); c:refine()
+local r = c:evolve{flow = "sd", tau = 1e-4, steps = 1000000}
+print(r.stop_reason, r.steps > 0, r.t == c:time())
+LUA
+"$FROTH" "$TMP/evolve.lua" >"$TMP/out" 2>"$TMP/err" &
+pid=$!
+sleep 2
+kill -INT "$pid"
+wait "$pid"
+rc=$?
+if [[ $rc != 0 ]] || ! grep -q '^interrupted	true	true$' "$TMP/out" ||
+    ! grep -q '^evolve: interrupted (Ctrl-C) at step [1-9][0-9]*, t = .*; the cluster keeps the state of that step$' "$TMP/err"; then
+    failed=$((failed + 1))
+    echo "FAIL Ctrl-C during evolve: rc $rc"
+    sed 's/^/  stdout: /' "$TMP/out"
+    sed 's/^/  stderr: /' "$TMP/err"
+else
+    passed=$((passed + 1))
+fi
+
 echo "$passed passed, $failed failed"
 [[ $failed == 0 ]]
