@@ -278,10 +278,17 @@ local function bodies_of(path, data, groups, group)
 end
 
 --- The cluster of an Evolver datafile's text (froth.read reads the file, with its limits, and
---- calls this; path names the file in messages). opts is unused for now (walls would come from
---- constraints, which this subset refuses).
+--- calls this; path names the file in messages). opts must be empty: an .fe file says its
+--- fixed vertices itself, and walls would come from constraints, which this subset refuses.
 function M.from_text(text, path, opts)
   local froth = require("froth")
+  if opts ~= nil then
+    if type(opts) ~= "table" then error("read: expected an option table {...}, got " .. type(opts), 0) end
+    for k in pairs(opts) do
+      error(("read: option '%s' is not used for an .fe file (the datafile itself says which "
+             .. "vertices are fixed; its constraints are not read)"):format(tostring(k)), 0)
+    end
+  end
   local data = parse(path, tokenize(path, text))
   -- Vertices in id order; ids may have gaps (Evolver allows it).
   local vid, V, fixed = {}, {}, {}

@@ -170,10 +170,14 @@ int l_read(lua_State* L) {
     o.push("walls");
     std::vector<WallPtr> walls = read_walls(L, -1, "read: walls");
     lua_pop(L, 1);
+    std::vector<int> fixed;
+    if (o.push("fixed") != LUA_TNIL) fixed = read_vertex_ids(L, -1, "read: fixed");
+    lua_pop(L, 1);
     o.finish();
     return guarded(L, [&] {
         ClusterSpec spec = read_msh(path);
         spec.walls = std::move(walls);
+        spec.fixed = std::move(fixed);
         push_cluster(L, std::move(spec));
         return 1;
     });

@@ -156,7 +156,8 @@ int l_edges(lua_State* L) {
         set_number(L, "length", (c.position(edge.first) - c.position(edge.second)).norm());
         set_integers(L, "surfaces", surfaces, 1);
         set_bool(L, "triple_line", surfaces.size() == 3);
-        set_bool(L, "boundary", incidence.facets == 1); // a free boundary edge: on a wall
+        set_bool(L, "boundary", incidence.facets == 1); // a free boundary edge: a wall or a wire
+        set_bool(L, "wire", c.is_wire_edge(edge.first, edge.second));
         keep_if(L, where, out, n);
     }
     return 1;

@@ -59,6 +59,8 @@ for _, case in ipairs{{"two_cubes.fe", 23, 44, 11, 2, "3/1/0/2"}, {"three_cells.
   for b = 1, case[5] do T.assert_near(c:volumes()[b], 1, 1e-13, case[1] .. ": unit volumes") end
 end
 
+T.check_error("read: option 'fixed' is not used for an .fe file", froth.read, dir .. "skew_quad.fe", {fixed = {1}})
+
 -- Bad files: one clear line naming the file, the line and what is wrong.
 local function with_file(text, f)
   local path = os.tmpname() .. ".fe"

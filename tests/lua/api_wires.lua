@@ -81,6 +81,19 @@ c:minimize{tol = 1e-6, tau_start = 1e4}
 T.assert_true(c:area() < coarse, "the refined film on the same polygons has a lower area",
               c:area() .. " vs " .. coarse)
 
+-- Edge records say which free edges are wires; a wire film written as MSH reads back with
+-- its fixed vertices given (MSH has no place for them).
+local film = froth.cluster((tube(24, 8, z0)))
+T.assert_equal(#film:edges{where = function(e) return e.wire end}, 48, "48 wire edges (two 24-gons)")
+T.assert_equal(#film:edges{where = function(e) return e.boundary and not e.wire end}, 0, "no wall edges")
+local path = os.tmpname() .. ".msh"
+film:write(path)
+T.check_error("no wall is attached", froth.read, path)
+local back = froth.read(path, {fixed = film:fixed()})
+os.remove(path)
+T.assert_equal(#back:fixed(), 48, "read back with its fixed vertices")
+T.assert_near(back:area(), film:area(), 1e-12 * film:area(), "the same film")
+
 -- The flows on a wire: MCF falls to the catenoid, SD of a bumpy tube lowers the energy with
 -- the rings held.
 local flat = froth.cluster((tube(24, 8, z0)))
