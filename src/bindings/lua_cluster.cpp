@@ -5,6 +5,7 @@
 #include "bindings/lua_anisotropy.h"
 #include "bindings/luax.h"
 #include "bindings/lua_queries.h"
+#include "bindings/lua_state.h"
 #include "bindings/lua_statics.h"
 #include "bindings/lua_walls.h"
 #include "core/format.h"
@@ -32,6 +33,29 @@ ChangeGuard::ChangeGuard(lua_State* L, ClusterHandle& h, const char* op) : h_(h)
         luaL_error(L, "%s: the cluster is busy: a query is running a wall function, which may "
                       "read the cluster but not change it", op);
     h.changing = op;
+}
+
+Mobility read_mobility(lua_State* L, int idx) {
+    if (lua_type(L, idx) == LUA_TNUMBER) {
+        const double b = lua_tonumber(L, idx);
+        Mobility m;
+        guarded(L, [&] {
+            m = Mobility::constant(b); // "mobility: ..." becomes "set_mobility: ..."
+            return 0;
+        });
+        return m;
+    }
+    if (lua_type(L, idx) == LUA_TSTRING && std::string(lua_tostring(L, idx)) == "gamma")
+        return Mobility::energy_density();
+    if (lua_isfunction(L, idx)) {
+        auto f = std::make_shared<LuaFunction>(L, idx, "mobility", "beta");
+        return Mobility::function(
+            [f](const Eigen::Vector3d& nu) { return f->call(nu[0], nu[1], nu[2], 1)[0]; },
+            "function");
+    }
+    luaL_error(L, "set_mobility: beta must be a positive number, \"gamma\" or a function "
+                  "(nx, ny, nz) -> beta, got %s", luaL_typename(L, idx));
+    return {};
 }
 
 namespace {
@@ -131,30 +155,6 @@ int l_anisotropy(lua_State* L) {
     if (gamma) push_anisotropy(L, gamma);
     else lua_pushnil(L);
     return 1;
-}
-
-/// beta from a number, "gamma" or a function (nx, ny, nz) -> beta.
-Mobility read_mobility(lua_State* L, int idx) {
-    if (lua_type(L, idx) == LUA_TNUMBER) {
-        const double b = lua_tonumber(L, idx);
-        Mobility m;
-        guarded(L, [&] {
-            m = Mobility::constant(b); // "mobility: ..." becomes "set_mobility: ..."
-            return 0;
-        });
-        return m;
-    }
-    if (lua_type(L, idx) == LUA_TSTRING && std::string(lua_tostring(L, idx)) == "gamma")
-        return Mobility::energy_density();
-    if (lua_isfunction(L, idx)) {
-        auto f = std::make_shared<LuaFunction>(L, idx, "mobility", "beta");
-        return Mobility::function(
-            [f](const Eigen::Vector3d& nu) { return f->call(nu[0], nu[1], nu[2], 1)[0]; },
-            "function");
-    }
-    luaL_error(L, "set_mobility: beta must be a positive number, \"gamma\" or a function "
-                  "(nx, ny, nz) -> beta, got %s", luaL_typename(L, idx));
-    return {};
 }
 
 /// c:set_mobility(surface or "all", beta).
@@ -343,6 +343,10 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     e.every = static_cast<int>(o.integer("every", 0));
     e.output = o.string("output", "");
     e.history = o.string("history", "");
+    e.checkpoint = o.string("checkpoint", ""); // a stem, like history; ".froth" is added
+    if (!e.checkpoint.empty() &&
+        !(e.checkpoint.size() > 6 && e.checkpoint.compare(e.checkpoint.size() - 6, 6, ".froth") == 0))
+        e.checkpoint += ".froth";
     e.project_onto_walls = o.boolean("project", false);
     e.exact_volumes = o.boolean("exact_volumes", true);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
@@ -526,6 +530,7 @@ void register_cluster_type(lua_State* L) {
     lua_getfield(L, -1, "__index");
     add_statics_methods(L);
     add_query_methods(L);
+    add_state_methods(L);
     lua_pop(L, 2);
 }
 

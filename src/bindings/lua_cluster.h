@@ -58,6 +58,10 @@ void register_cluster_type(lua_State* L);
 /// Validates spec (throws froth errors) and pushes a new froth.Cluster.
 void push_cluster(lua_State* L, ClusterSpec spec);
 
+/// beta from a number, "gamma" or a function (nx, ny, nz) -> beta at stack index idx; a Lua
+/// error ("set_mobility: ...") for anything else.
+Mobility read_mobility(lua_State* L, int idx);
+
 /// Pushes report tables (shared by c:report, c:step and the evolve callback).
 void push_report(lua_State* L, const Report& r);
 void push_step_report(lua_State* L, const StepReport& r);

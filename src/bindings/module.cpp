@@ -3,6 +3,7 @@
 #include "bindings/lua_anisotropy.h"
 #include "bindings/lua_builders.h"
 #include "bindings/lua_cluster.h"
+#include "bindings/lua_state.h"
 #include "bindings/lua_walls.h"
 #include "bindings/lua_wulff.h"
 
@@ -76,6 +77,7 @@ void open_froth(lua_State* L) {
     add_wall_constructors(L);
     add_wulff_functions(L);
     add_anisotropy_constructors(L);
+    add_state_functions(L);
     lua_pushstring(L, FROTH_VERSION);
     lua_setfield(L, -2, "version");
     set_manual(L);

@@ -4,10 +4,18 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <string>
+#include <vector>
 
 namespace froth {
 
 using Vec3 = Eigen::Vector3d;
 using Tri = std::array<int, 3>; ///< vertex ids, 0-based, in the facet's orientation
+
+/// A named array of numbers: the schemes' history as a state file keeps it (io/state_file.h).
+struct NamedValues {
+    std::string name;
+    std::vector<double> values;
+};
 
 } // namespace froth

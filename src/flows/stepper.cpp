@@ -36,6 +36,24 @@ void TimeStepper::reset() {
     if (sd_) sd_->reset();
 }
 
+std::vector<NamedValues> TimeStepper::history() const {
+    std::vector<NamedValues> h;
+    if (mcf_) mcf_->save_history(h);
+    if (sd_) sd_->save_history(h);
+    return h;
+}
+
+void TimeStepper::restore_history(const Cluster& c, const std::vector<NamedValues>& history) {
+    reset();
+    scheme(Flow::MeanCurvature).restore_history(c, history);
+    scheme(Flow::SurfaceDiffusion).restore_history(c, history);
+}
+
+void TimeStepper::drop_factorizations() {
+    if (mcf_) mcf_->drop_factorizations();
+    if (sd_) sd_->drop_factorizations();
+}
+
 Scheme& TimeStepper::scheme(Flow flow) {
     if (flow == Flow::MeanCurvature) {
         if (!mcf_) mcf_ = std::make_unique<MeanCurvatureScheme>();
@@ -112,7 +130,9 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
 
     const PositionBasis P(c);
     Scheme& chosen = scheme(flow);
-    const Eigen::VectorXd z = chosen.solve(c, tau, P, fixed_point_, report);
+    // Every vertex fixed: nothing moves (and SD's kappa block alone is singular on constants).
+    const Eigen::VectorXd z =
+        P.size() == 0 ? Eigen::VectorXd(0) : chosen.solve(c, tau, P, fixed_point_, report);
     std::vector<Vec3> X = displaced(c, P, z);
     if (project_onto_walls) project_onto_walls_of(c, X);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)

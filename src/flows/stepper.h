@@ -57,6 +57,13 @@ class TimeStepper {
     StepReport step(Cluster& c, Flow flow, double tau, bool project_onto_walls = false);
     /// Forgets every cached pattern and factorisation (after the cluster's mesh was replaced).
     void reset();
+    /// The schemes' history (Scheme::save_history), for a state file.
+    std::vector<NamedValues> history() const;
+    /// Puts a saved history back (on the cluster it was saved with). \throw InvalidInput
+    void restore_history(const Cluster& c, const std::vector<NamedValues>& history);
+    /// Forgets the factorisations, keeping the history: called where a state is saved, so that
+    /// the run that saved and a run restored from the file take the same next step.
+    void drop_factorizations();
     /// \throw InvalidInput unless tol > 0, max_iterations >= 2 and max_halvings in 0..20.
     void set_fixed_point(FixedPointOptions o);
     const FixedPointOptions& fixed_point() const { return fixed_point_; }

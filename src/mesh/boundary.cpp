@@ -48,6 +48,12 @@ double Cluster::wall_tolerance() const {
 }
 
 bool Cluster::on_common_wall(int a, int b) const {
+    if (given_attachments_) {
+        const std::vector<int> wa = vertex_walls(a), wb = vertex_walls(b);
+        return std::any_of(wa.begin(), wa.end(), [&](int w) {
+            return std::find(wb.begin(), wb.end(), w) != wb.end();
+        });
+    }
     const double tol = wall_tolerance();
     for (const WallPtr& w : walls_)
         if (w->distance(X_[a]) <= tol && w->distance(X_[b]) <= tol) return true;
@@ -78,6 +84,12 @@ void Cluster::attach_walls() {
         double nearest = INFINITY;
         int nearest_wall = 0;
         for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+            if (given_attachments_) {
+                const std::vector<int> given = vertex_walls(v);
+                if (std::find(given.begin(), given.end(), w) != given.end())
+                    vertex_wall.emplace_back(v, w), normals.push_back(walls_[w]->normal(X_[v]));
+                continue;
+            }
             const double d = walls_[w]->distance(X_[v]);
             if (d < nearest) nearest = d, nearest_wall = w;
             if (d <= tol) {
@@ -87,6 +99,9 @@ void Cluster::attach_walls() {
         }
         const std::string where =
             vertex_text(v, X_[v]) + " of surface " + std::to_string(surface_of[v] + 1);
+        if (normals.empty() && given_attachments_)
+            throw TopologyError("cluster: " + where + " is on a free boundary edge but has no "
+                                "wall among the given attachments");
         if (normals.empty())
             throw TopologyError(
                 "cluster: " + where + " is on a free boundary edge (" + std::to_string(v + 1) +
@@ -98,6 +113,12 @@ void Cluster::attach_walls() {
             throw TopologyError("cluster: " + where +
                                 " lies on walls whose normals span all "
                                 "directions; it could not move");
+    }
+    if (given_attachments_) {
+        for (int v = 0; v < n; ++v)
+            if (surface_of[v] < 0 && vw_start_[v] != vw_start_[v + 1])
+                throw TopologyError("cluster: " + vertex_text(v, X_[v]) + " is attached to a "
+                                    "wall but is on no free boundary edge");
     }
     build_csr_lists(n, vertex_wall, vw_start_, vw_list_);
     for (const BoundaryEdge& e : boundary_edges_) {

@@ -42,6 +42,12 @@ Cluster::Cluster(ClusterSpec spec) {
         if (vs_start_[v] == vs_start_[v + 1])
             throw TopologyError("cluster: " + vertex_name(v) + " is not a corner of any facet");
 
+    if (!spec.attachments.empty()) {
+        std::vector<std::pair<int, int>> vertex_wall;
+        for (const auto& [v, w] : spec.attachments) vertex_wall.emplace_back(v, w);
+        build_csr_lists(n_vertices(), vertex_wall, vw_start_, vw_list_);
+        given_attachments_ = true;
+    }
     classify_edges();
     attach_walls();
     build_triple_lines();
@@ -93,6 +99,13 @@ void Cluster::set_target_volume(int body, double volume) {
     target_volumes_[body] = volume;
 }
 
+void Cluster::set_initial_area(double area) {
+    if (!(std::isfinite(area) && area > 0))
+        throw InvalidInput("set_initial_area: the area must be positive and finite, got " +
+                           fmt(area));
+    initial_area_ = area;
+}
+
 void Cluster::set_volume_references(std::vector<double> initial, std::vector<double> target) {
     if (initial.size() != bodies_.size() || target.size() != bodies_.size())
         throw InvalidInput("set_volume_references: expected " + std::to_string(n_bodies()) +
@@ -105,6 +118,10 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
     const int n = static_cast<int>(spec.vertices.size());
     if (n == 0) throw InvalidInput("cluster: no vertices");
     if (spec.surfaces.empty()) throw InvalidInput("cluster: no surfaces");
+    for (const auto& [v, w] : spec.attachments)
+        if (v < 0 || v >= n || w < 0 || w >= static_cast<int>(spec.walls.size()))
+            throw InvalidInput("cluster: the attachment of vertex " + std::to_string(v + 1) +
+                               " to wall " + std::to_string(w + 1) + " is out of range");
     for (std::size_t w = 0; w < spec.walls.size(); ++w)
         if (!spec.walls[w]) throw InvalidInput("cluster: wall " + std::to_string(w + 1) + " is null");
     for (int v : spec.fixed)
@@ -223,6 +240,14 @@ int Cluster::pair_index(int v, int s) const {
 
 std::vector<int> Cluster::vertex_walls(int v) const {
     return {vw_list_.begin() + vw_start_[v], vw_list_.begin() + vw_start_[v + 1]};
+}
+
+std::vector<std::array<int, 2>> Cluster::wall_attachments() const {
+    std::vector<std::array<int, 2>> pairs;
+    for (int v = 0; v < n_vertices(); ++v)
+        for (int k = vw_start_[v]; k < vw_start_[v + 1]; ++k)
+            pairs.push_back({v, vw_list_[k]});
+    return pairs;
 }
 
 std::vector<int> Cluster::vertex_junction_edges(int v) const {

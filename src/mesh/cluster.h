@@ -42,6 +42,11 @@ struct ClusterSpec {
     /// boundary edge between two fixed vertices that lies on no wall is a wire: the film ends
     /// there (a minimal surface spanning a frame needs no body).
     std::vector<int> fixed;
+    /// (vertex, wall) pairs: which walls the vertices of free boundary edges are attached to,
+    /// as a saved cluster had them (io/state_file.h). Empty: found by distance (a vertex is on
+    /// a wall within 1e-6 of a typical edge), which a state that drifted off a curved wall by
+    /// the seed's linearised constraint (O(tau^2) a step) would fail.
+    std::vector<std::array<int, 2>> attachments;
 };
 
 /// A surface of the cluster. Its energy density is sigma gamma(nu) (seed (1.15); gamma null:
@@ -166,6 +171,8 @@ class Cluster {
     /// The walls (ids into walls()) that vertex v is attached to; empty unless v is on a free
     /// boundary edge. Fixed when the cluster is made.
     std::vector<int> vertex_walls(int v) const;
+    /// Every (vertex, wall) attachment, vertex-major (ClusterSpec::attachments).
+    std::vector<std::array<int, 2>> wall_attachments() const;
     /// How many directions vertex v may move in: 0 if it is fixed, else 3, or 3 - rank of its
     /// walls' normals.
     int vertex_freedom(int v) const { return fixed_[v] ? 0 : freedom_[v]; }
@@ -199,6 +206,9 @@ class Cluster {
     void set_volume_references(std::vector<double> initial, std::vector<double> target);
     /// Total facet area when the cluster was made: a length scale for degeneracy checks.
     double initial_area() const { return initial_area_; }
+    /// Restores the reference area of a saved cluster (io/state_file.h). \throw InvalidInput
+    /// unless it is positive and finite.
+    void set_initial_area(double area);
 
   private:
     void check_spec(const ClusterSpec& spec) const;
@@ -226,6 +236,7 @@ class Cluster {
     std::vector<BoundaryEdge> boundary_edges_;
     std::vector<BoundaryEdge> wire_edges_; // sorted by (a, b), a < b
     std::vector<int> vw_start_, vw_list_, freedom_; // CSR vertex -> walls; free directions
+    bool given_attachments_ = false;                // vw_* from ClusterSpec::attachments
     std::vector<char> fixed_;                       // per vertex
     int n_fixed_ = 0;
     std::vector<double> initial_volumes_, target_volumes_;

@@ -7,15 +7,21 @@
 namespace froth {
 namespace {
 
-/// The midpoint of edge (a, b) on the walls both ends are attached to (alternating
-/// projections on a corner), so a refined film still meets its walls.
-Vec3 wall_midpoint(const Cluster& c, int a, int b) {
-    Vec3 m = 0.5 * (c.position(a) + c.position(b));
+/// The walls both ends of edge (a, b) are attached to.
+std::vector<int> common_walls(const Cluster& c, int a, int b) {
     std::vector<int> common;
     const std::vector<int> wa = c.vertex_walls(a), wb = c.vertex_walls(b);
     for (int w : wa)
         for (int u : wb)
             if (w == u) common.push_back(w);
+    return common;
+}
+
+/// The midpoint of edge (a, b) on the walls both ends are attached to (alternating
+/// projections on a corner), so a refined film still meets its walls.
+Vec3 wall_midpoint(const Cluster& c, int a, int b) {
+    Vec3 m = 0.5 * (c.position(a) + c.position(b));
+    const std::vector<int> common = common_walls(c, a, b);
     if (common.empty()) return m;
     bool flat = true;
     for (int w : common) flat = flat && c.walls()[w]->is_flat();
@@ -31,6 +37,9 @@ Cluster refine(const Cluster& c) {
     ClusterSpec spec;
     spec.vertices = c.positions();
     spec.walls = c.walls();
+    // The walls stay attached as they were (a vertex that drifted off a curved wall by the
+    // linearised constraint stays on it); a midpoint gets the walls its edge's ends share.
+    spec.attachments = c.wall_attachments();
     // Edges shared by surfaces (triple lines) get one midpoint: keyed by the sorted pair.
     std::map<std::pair<int, int>, int> midpoint;
     std::map<std::pair<int, int>, bool> boundary;
@@ -38,9 +47,12 @@ Cluster refine(const Cluster& c) {
     const auto mid = [&](int a, int b) {
         const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
         auto [it, fresh] = midpoint.try_emplace(key, static_cast<int>(spec.vertices.size()));
-        if (fresh)
-            spec.vertices.push_back(boundary.count(key) ? wall_midpoint(c, a, b)
-                                                        : Vec3(0.5 * (c.position(a) + c.position(b))));
+        if (fresh && boundary.count(key)) {
+            for (int w : common_walls(c, a, b)) spec.attachments.push_back({it->second, w});
+            spec.vertices.push_back(wall_midpoint(c, a, b));
+        } else if (fresh) {
+            spec.vertices.push_back(0.5 * (c.position(a) + c.position(b)));
+        }
         return it->second;
     };
     for (const Surface& s : c.surfaces()) {

@@ -3,7 +3,9 @@
 #include "core/errors.h"
 #include "core/format.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace froth {
 namespace {
@@ -29,6 +31,7 @@ class PlaneWall final : public Wall {
     std::string describe() const override {
         return "plane " + point_text(n_) + " . x = " + fmt(d_);
     }
+    WallParameters parameters() const override { return {"plane", {n_[0], n_[1], n_[2], d_}, {}}; }
     bool is_flat() const override { return true; }
 
   private:
@@ -48,6 +51,9 @@ class SlabWall final : public Wall {
     std::string describe() const override {
         return "slab " + fmt(lo_) + " <= " + point_text(n_) + " . x <= " + fmt(hi_);
     }
+    WallParameters parameters() const override {
+        return {"slab", {n_[0], n_[1], n_[2], lo_, hi_}, {}};
+    }
     bool is_flat() const override { return true; }
 
   private:
@@ -63,6 +69,7 @@ class SphereWall final : public Wall {
     std::string describe() const override {
         return "sphere |x - " + point_text(c_) + "| = " + fmt(r_);
     }
+    WallParameters parameters() const override { return {"sphere", {c_[0], c_[1], c_[2], r_}, {}}; }
 
     /// The radial projection of the triangle onto the sphere, c . S + R^3 Omega: with x = c + R n
     /// on the sphere, x . n = c . n + R. S is the flat triangle's vector area (the arcs differ
@@ -91,6 +98,9 @@ class CylinderWall final : public Wall {
     std::string describe() const override {
         return "cylinder of radius " + fmt(r_) + " about " + point_text(p_) + " + s " +
                point_text(a_);
+    }
+    WallParameters parameters() const override {
+        return {"cylinder", {p_[0], p_[1], p_[2], a_[0], a_[1], a_[2], r_}, {}};
     }
 
     /// The patch of the cylinder that the triangle spans when the cylinder is unrolled (the
@@ -153,6 +163,7 @@ class FunctionWall final : public Wall {
         return g;
     }
     std::string describe() const override { return "wall '" + name_ + "'"; }
+    WallParameters parameters() const override { return {"function", {step_}, name_}; }
 
   private:
     std::function<double(const Vec3&)> F_;
@@ -236,6 +247,43 @@ WallPtr make_function_wall(std::function<double(const Vec3&)> F,
                            fmt(fd_step));
     return std::make_shared<FunctionWall>(std::move(F), std::move(gradient), std::move(name),
                                           fd_step);
+}
+
+namespace {
+
+/// The unit vector v as saved: checked, not normalised again (that could change its last bit).
+Vec3 saved_unit_vector(const Vec3& v, const std::string& kind) {
+    if (!(std::abs(v.norm() - 1) <= 1e-12))
+        throw InvalidInput("wall: a saved " + kind + "'s normal or axis " + point_text(v) +
+                           " is not a unit vector");
+    return v;
+}
+
+} // namespace
+
+WallPtr wall_from_parameters(const WallParameters& p) {
+    static const std::pair<const char*, std::size_t> counts[] = {
+        {"plane", 4}, {"slab", 5}, {"sphere", 4}, {"cylinder", 7}};
+    const auto known = std::find_if(std::begin(counts), std::end(counts),
+                                    [&](const auto& k) { return p.kind == k.first; });
+    if (known == std::end(counts))
+        throw InvalidInput("wall: '" + p.kind + "' is not a preset wall kind (plane, slab, " +
+                           "sphere, cylinder)");
+    if (p.values.size() != known->second)
+        throw InvalidInput("wall: a " + p.kind + " takes " + std::to_string(known->second) +
+                           " numbers, got " + std::to_string(p.values.size()));
+    for (double v : p.values) require_finite(v, "wall", "every number of a saved wall");
+    const auto& v = p.values;
+    const Vec3 a(v[0], v[1], v[2]);
+    if (p.kind == "plane") return std::make_shared<PlaneWall>(saved_unit_vector(a, p.kind), v[3]);
+    if (p.kind == "slab") {
+        if (!(v[3] < v[4])) throw InvalidInput("wall: a saved slab has lo >= hi");
+        return std::make_shared<SlabWall>(saved_unit_vector(a, p.kind), v[3], v[4]);
+    }
+    const double r = v.back();
+    if (!(r > 0)) throw InvalidInput("wall: a saved " + p.kind + " has radius " + fmt(r));
+    if (p.kind == "sphere") return std::make_shared<SphereWall>(a, r);
+    return std::make_shared<CylinderWall>(a, saved_unit_vector(Vec3(v[3], v[4], v[5]), p.kind), r);
 }
 
 std::string point_text(const Vec3& x) {

@@ -16,6 +16,16 @@
 
 namespace froth {
 
+/// What a wall is made of, for saving and restoring it exactly (io/state_file.h): a preset's
+/// kind and the numbers it holds (already normalised: restoring does not normalise again, so
+/// the restored wall is bit for bit the saved one), or kind "function" with the wall's name and
+/// finite-difference step (a user function cannot be saved; it is given again by name).
+struct WallParameters {
+    std::string kind; ///< "plane", "slab", "sphere", "cylinder" or "function"
+    std::vector<double> values;
+    std::string name; ///< kind "function" only
+};
+
 class Wall {
   public:
     virtual ~Wall() = default;
@@ -25,6 +35,8 @@ class Wall {
     virtual Vec3 gradient(const Vec3& x) const = 0;
     /// A short description, e.g. "plane 0 0 1 . x = 0".
     virtual std::string describe() const = 0;
+    /// The kind and numbers that wall_from_parameters restores this wall from.
+    virtual WallParameters parameters() const = 0;
     /// True when the wall is a union of planes: then a fan from a point on the wall closes a
     /// body's lid exactly (volumes) and the linearised constraint keeps vertices on it exactly.
     virtual bool is_flat() const { return false; }
@@ -61,6 +73,11 @@ WallPtr make_function_wall(std::function<double(const Vec3&)> F,
                            std::function<Vec3(const Vec3&)> gradient, std::string name,
                            double fd_step = 1e-6);
 
+/// The preset wall of saved parameters (plane: n, d; slab: n, lo, hi; sphere: c, r; cylinder:
+/// p, a, r), with the numbers as they are. \throw InvalidInput for kind "function" (the
+/// caller supplies those), an unknown kind, a wrong count, non-finite values, a normal or axis
+/// that is not of unit length within 1e-12, lo >= hi or a radius that is not positive.
+WallPtr wall_from_parameters(const WallParameters& p);
 /// "(x, y, z)" with %.6g numbers, for wall descriptions and error messages.
 std::string point_text(const Vec3& x);
 

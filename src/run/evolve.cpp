@@ -4,6 +4,7 @@
 #include "core/format.h"
 #include "core/interrupt.h"
 #include "io/history.h"
+#include "io/state_file.h"
 #include "io/vtk_writer.h"
 
 #include <algorithm>
@@ -61,7 +62,7 @@ class Run {
   public:
     Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o)
         : c_(c), stepper_(stepper), o_(o), watch_(o.watch), t_start_(c.time()),
-          t_end_(c.time() + o.duration), checkpoint_(c.positions()), checkpoint_t_(c.time()) {
+          t_end_(c.time() + o.duration), uncrossed_(c.positions()), uncrossed_t_(c.time()) {
         r_.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
         if (!o.output.empty()) {
             series_ = std::make_unique<PvdSeries>(o.output);
@@ -71,6 +72,7 @@ class Run {
             history_.push_back(history_row(make_report(c)));
             write_history(o.history, history_);
         }
+        if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper);
     }
 
     /// Takes one step and everything that follows it; false ends the run.
@@ -100,6 +102,7 @@ class Run {
     EvolveResult finish(Clock::time_point start) {
         if (r_.event) r_.stop_reason = "topology: " + r_.event->message;
         if (series_ && !written_last_) series_->add(c_.time(), c_, output_fields(c_));
+        if (!o_.checkpoint.empty() && !saved_last_) save_state(o_.checkpoint, c_, stepper_);
         if (!o_.history.empty()) {
             while (history_.size() > 1 && history_.back().t > c_.time()) // after a crossing
                 history_.pop_back();
@@ -153,7 +156,7 @@ class Run {
         r_.factorizations += s.refactorized;
         r_.max_energy_increase =
             std::max(r_.max_energy_increase, (s.energy - s.energy_before) / s.energy_before);
-        written_last_ = false;
+        written_last_ = saved_last_ = false;
         if (!o_.history.empty()) history_.push_back(history_row(s));
     }
 
@@ -162,15 +165,15 @@ class Run {
     bool watch_for_topology() {
         std::optional<TopologyEvent> e = watch_.check(c_, r_.steps);
         if (!e) {
-            if (watch_.tests_crossings(r_.steps)) checkpoint_ = c_.positions(), checkpoint_t_ = c_.time();
+            if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
             return false;
         }
         if (e->kind == "self-intersection") {
-            c_.set_positions(checkpoint_);
-            c_.set_time(checkpoint_t_);
-            e->message += "; the state at t = " + fmt(checkpoint_t_) +
+            c_.set_positions(uncrossed_);
+            c_.set_time(uncrossed_t_);
+            e->message += "; the state at t = " + fmt(uncrossed_t_) +
                           ", the last one without crossings, is kept";
-            e->t = checkpoint_t_;
+            e->t = uncrossed_t_;
         }
         r_.event = std::move(e);
         return true;
@@ -180,6 +183,10 @@ class Run {
         if (series_ && o_.every > 0 && r_.steps % o_.every == 0) {
             series_->add(c_.time(), c_, output_fields(c_));
             written_last_ = true;
+        }
+        if (!o_.checkpoint.empty() && o_.every > 0 && r_.steps % o_.every == 0) {
+            save_state(o_.checkpoint, c_, stepper_);
+            saved_last_ = true;
         }
         if (o_.progress && std::chrono::duration<double>(Clock::now() - last_draw_).count() > 0.25) {
             draw_progress(o_.progress, r_, s, progress());
@@ -195,13 +202,18 @@ class Run {
     EvolveResult r_;
     std::unique_ptr<PvdSeries> series_;
     std::vector<HistoryRow> history_;
-    std::vector<Vec3> checkpoint_;
-    double checkpoint_t_;
-    bool written_last_ = true;
+    std::vector<Vec3> uncrossed_; // the last state that passed the crossing test
+    double uncrossed_t_;
+    bool written_last_ = true, saved_last_ = true;
     Clock::time_point last_draw_ = Clock::now();
 };
 
 } // namespace
+
+void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper) {
+    write_state_file(path, capture_state(c, stepper.history()));
+    stepper.drop_factorizations();
+}
 
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     check_options(o);

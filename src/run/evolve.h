@@ -25,6 +25,10 @@ struct EvolveOptions {
     /// Record t, energy and volumes of every step and write them to <history>.csv and an
     /// energy plot to <history>.svg at the end; empty: no history.
     std::string history;
+    /// A state file (io/state_file.h) saved at the start, every `every` steps (when every > 0)
+    /// and at the end, each replacing the last: the run can be resumed from it with
+    /// froth.load. Empty: none.
+    std::string checkpoint;
     std::FILE* progress = nullptr; ///< a terminal to draw a progress line on, or nullptr
     /// Called after every step; returning false stops the evolution.
     std::function<bool(const StepReport&)> on_step;
@@ -58,5 +62,10 @@ struct EvolveResult {
 /// state in place. \throw InvalidInput for bad options; other errors propagate, and the
 /// cluster then holds the state after the last successful step.
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& options);
+
+/// Saves c and the stepper's history to a state file (c:save, evolve's checkpoints). The
+/// stepper then forgets its factorisations, so that this run and one restored from the file
+/// take the same next steps bit for bit. \throw IoError, InvalidInput (io/state_file.h)
+void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper);
 
 } // namespace froth

@@ -73,6 +73,16 @@ class Scheme {
                                   const FixedPointOptions& fp, StepCost& cost);
     /// Forgets the patterns, factorisations and history (the cluster's mesh was replaced).
     virtual void reset();
+    /// Forgets the factorisations and patterns, not the history: the next step factorises
+    /// afresh, as a scheme restored from a state file does, so both continue bit for bit alike
+    /// (a lagged factor changes a GMRES solve's round-off, not its tolerance).
+    void drop_factorizations() { drop_systems(); }
+    /// What the next step depends on beyond the cluster (the volume-exact step's warm start),
+    /// as named arrays for a state file.
+    virtual void save_history(std::vector<NamedValues>&) const {}
+    /// Puts back what save_history gave, on the cluster it was saved with; arrays of other
+    /// schemes are ignored. \throw InvalidInput for an array of the wrong size.
+    virtual void restore_history(const Cluster&, const std::vector<NamedValues>&) {}
 
   protected:
     /// Drops the assembled patterns and factorisations (not the history): when the cluster's

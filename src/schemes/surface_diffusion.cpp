@@ -2,6 +2,8 @@
 // basis and systems (the volume-exact step is volume_exact_sd.cpp).
 #include "schemes/surface_diffusion.h"
 
+#include "core/errors.h"
+
 #include "assembly/exact_volumes.h"
 #include "assembly/stiffness.h"
 
@@ -56,6 +58,40 @@ void SurfaceDiffusionScheme::reset() {
     Scheme::reset();
     Z_.reset();
     last_z_.resize(0), last_end_.clear();
+}
+
+void SurfaceDiffusionScheme::save_history(std::vector<NamedValues>& out) const {
+    if (last_end_.empty()) return;
+    out.push_back({"sd.last_z", {last_z_.data(), last_z_.data() + last_z_.size()}});
+    out.push_back({"sd.last_tau", {last_tau_}});
+    std::vector<double> end;
+    end.reserve(3 * last_end_.size());
+    for (const Vec3& x : last_end_)
+        end.insert(end.end(), {x[0], x[1], x[2]});
+    out.push_back({"sd.last_end", std::move(end)});
+}
+
+void SurfaceDiffusionScheme::restore_history(const Cluster& c,
+                                             const std::vector<NamedValues>& in) {
+    const auto find = [&](const char* name) -> const std::vector<double>* {
+        for (const NamedValues& a : in)
+            if (a.name == name) return &a.values;
+        return nullptr;
+    };
+    const std::vector<double>*z = find("sd.last_z"), *tau = find("sd.last_tau"),
+                           *end = find("sd.last_end");
+    if (!z && !tau && !end) return;
+    if (!z || !tau || !end || tau->size() != 1 || !(tau->front() > 0) ||
+        end->size() != 3 * static_cast<std::size_t>(c.n_vertices()))
+        throw InvalidInput("surface diffusion history: sd.last_z, sd.last_tau and sd.last_end "
+                           "must come together, with one tau > 0 and 3 numbers per vertex");
+    reset();
+    Z_ = std::make_shared<const KappaBasis>(kappa_basis(c)); // the warm start's size check
+    last_z_ = Eigen::Map<const Eigen::VectorXd>(z->data(), static_cast<Eigen::Index>(z->size()));
+    last_tau_ = tau->front();
+    last_end_.resize(c.n_vertices());
+    for (int v = 0; v < c.n_vertices(); ++v)
+        last_end_[v] = Vec3((*end)[3 * v], (*end)[3 * v + 1], (*end)[3 * v + 2]);
 }
 
 void SurfaceDiffusionScheme::drop_systems() {

@@ -40,6 +40,10 @@ class SurfaceDiffusionScheme final : public Scheme {
     Eigen::VectorXd solve(const Cluster& c, double tau, const PositionBasis& P,
                           const FixedPointOptions& fp, StepCost& cost) override;
     void reset() override;
+    /// "sd.last_z", "sd.last_tau", "sd.last_end": the warm start (nothing before a
+    /// volume-exact step).
+    void save_history(std::vector<NamedValues>& out) const override;
+    void restore_history(const Cluster& c, const std::vector<NamedValues>& in) override;
 
   protected:
     void assemble_system(const Cluster& c, const PairGeometry& g, const PositionBasis& P,

@@ -122,6 +122,7 @@ void SparseDirectSolver::factorize(const SparseMatrix& A) {
 }
 
 Eigen::MatrixXd SparseDirectSolver::solve_fresh(const SparseMatrix& A, const Eigen::MatrixXd& B) {
+    if (A.rows() == 0) return B; // nothing to solve for (every vertex fixed); CHOLMOD would crash
     factorize(A);
     Eigen::MatrixXd X = kind_ == Factorization::Cholesky ? Eigen::MatrixXd(impl_->llt.solve(B))
                                                          : Eigen::MatrixXd(impl_->lu.solve(B));
@@ -131,6 +132,7 @@ Eigen::MatrixXd SparseDirectSolver::solve_fresh(const SparseMatrix& A, const Eig
 }
 
 Eigen::MatrixXd SparseDirectSolver::solve_with_last_factor(const Eigen::MatrixXd& B) const {
+    if (B.rows() == 0) return B;
     if (!factorized_) throw SolverError("solve: no factorisation to reuse");
     Eigen::MatrixXd X = kind_ == Factorization::Cholesky ? Eigen::MatrixXd(impl_->llt.solve(B))
                                                          : Eigen::MatrixXd(impl_->lu.solve(B));
@@ -145,6 +147,7 @@ Eigen::VectorXd SparseDirectSolver::apply_factor(const Eigen::VectorXd& b) const
 
 Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b,
                                           SolveStats* stats) {
+    if (A.rows() == 0) return b; // every vertex fixed: an empty system, which CHOLMOD would not take
     SolveStats s;
     auto apply_A = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return A * v; };
     auto apply_P = [&](const Eigen::VectorXd& v) { return apply_factor(v); };

@@ -14,6 +14,7 @@
 // Run under ASan/UBSan in CI (.ci/run) so memory errors abort at the first bad access.
 #include "core/errors.h"
 #include "io/msh_reader.h"
+#include "io/state_file.h"
 #include "mesh/cluster.h"
 
 #include <chrono>
@@ -32,11 +33,28 @@ namespace {
 
 struct Reader {
     const char* name;
-    std::function<froth::ClusterSpec(std::string_view)> parse;
+    std::function<froth::Cluster(std::string_view)> read; ///< reads and builds the cluster
 };
 
+/// A mutated state file sealed again with a correct checksum, so that the mutations reach the
+/// parser and the cluster's checks instead of stopping at the checksum.
+froth::Cluster read_resealed_state(std::string_view text) {
+    std::string sealed(text);
+    const std::size_t mark = sealed.rfind("\nchecksum ");
+    if (mark != std::string::npos)
+        sealed = sealed.substr(0, mark + 1) + "checksum " +
+                 froth::state_checksum(std::string_view(sealed).substr(0, mark + 1)) + "\n";
+    const froth::StateResolvers given{
+        [](int, const std::string&) {
+            return froth::make_function_wall([](const froth::Vec3& x) { return x[2]; }, {}, "z");
+        },
+        [](int) { return froth::Mobility::constant(2); }};
+    return froth::restore_cluster(froth::parse_state_file(sealed, "fuzz.froth"), given);
+}
+
 const Reader kReaders[] = {
-    {"msh", [](std::string_view text) { return froth::parse_msh(text, "fuzz.msh"); }},
+    {"msh", [](std::string_view text) { return froth::Cluster(froth::parse_msh(text, "fuzz.msh")); }},
+    {"state", read_resealed_state},
 };
 
 /// splitmix64: the same stream on every platform (std:: distributions are not portable).
@@ -179,7 +197,7 @@ std::string slurp(const std::string& path) {
 /// "ok" / "error" for the expected outcomes; throws anything unexpected through.
 const char* run_one(const Reader& reader, const std::string& input) {
     try {
-        froth::Cluster c(reader.parse(input));
+        const froth::Cluster c = reader.read(input);
         return "ok";
     } catch (const froth::Error&) {
         return "error";
@@ -187,7 +205,7 @@ const char* run_one(const Reader& reader, const std::string& input) {
 }
 
 [[noreturn]] void usage() {
-    std::cerr << "usage: froth_fuzz <reader: msh> <seed files...> [--iterations N] [--seconds T] "
+    std::cerr << "usage: froth_fuzz <reader: msh | state> <seed files...> [--iterations N] [--seconds T] "
                  "[--seed S] [--only K] [--max-ms M] [--crashes DIR]\n";
     std::exit(2);
 }

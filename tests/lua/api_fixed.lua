@@ -117,4 +117,18 @@ T.check_error("fix: entry 1 is not a vertex id", c.fix, c, {1.5})
 T.check_error("fix: vertex 100000 does not exist (the cluster has vertices 1..", c.fix, c, {1, 100000})
 T.check_error("unfix: vertex 100000 does not exist", c.unfix, c, 100000)
 T.assert_equal(#c:fixed(), before, "a failed fix changes nothing")
+
+-- Every vertex fixed: each flow and minimize leave the cluster as it is (an empty system; SD's
+-- kappa block alone would be singular) and the time still advances.
+local all = boxes()
+all:fix(all:vertices())
+local X0 = T.positions(all)
+for _, flow in ipairs({"mcf", "sd"}) do
+  local r = all:evolve{flow = flow, tau = 1e-3, steps = 2}
+  T.assert_equal(r.stop_reason, "steps done", flow .. " with every vertex fixed runs")
+  T.assert_true(T.same_positions(all, X0), flow .. " moves nothing")
+end
+T.assert_near(all:time(), 4e-3, 1e-15, "the time advances")
+T.assert_equal(all:minimize{}.stop_reason, "converged", "minimize with nothing free converges")
+T.assert_true(T.same_positions(all, X0), "minimize moves nothing")
 T.summary()
