@@ -112,6 +112,14 @@ check_resume("drop on a plane", drop, sd(3, 2e-3))
 local sphere_drop = froth.drop_on_sphere_wall{h = 0.3}
 sd(2, 2e-3)(sphere_drop)
 check_resume("drop on a sphere wall", sphere_drop, sd(2, 2e-3))
+-- Its rim has drifted off the sphere (the linearised constraint): far beyond the distance test
+-- a new cluster's attachment uses, so refine must carry the attachments over, as the file does.
+local drift = sphere_drop:report().wall_drift
+T.assert_true(drift > 1e-5, "the rim drifted off the curved wall", tostring(drift))
+local before_refine = sphere_drop:info().vertices
+sphere_drop:refine()
+T.assert_true(sphere_drop:info().vertices > before_refine, "refine after the drift works")
+T.assert_equal(sphere_drop:report().wall_drift, drift, "and keeps the drifted rim attached")
 local slab = froth.cylinder_in_slab{h = 0.3}
 sd(2, 2e-3)(slab)
 check_resume("cylinder in a slab", slab, sd(2, 2e-3))
