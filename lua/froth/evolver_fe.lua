@@ -1,27 +1,31 @@
 -- froth.evolver_fe: Surface Evolver datafiles (.fe) read by froth.read (issue 14, item 2).
--- The subset read: `vertices` (coordinates, `fixed`), `edges` (end points, `fixed`), `faces`
--- (oriented edge loops; `tension`/`density` per face), `bodies` (signed faces, `volume`),
--- `PARAMETER name = value`, `#define name value`, comments (`//`, `/* */`), and expressions in
--- numbers (pi, e, sin, cos, tan, sqrt, exp, log, abs, atan, asin, acos, ^); everything after
--- `read` is Evolver's command section and is not run. As Evolver does, a face of more than
--- three edges gets a vertex at its centroid and a triangle per edge (so the counts and areas
--- after reading are Evolver's). froth's surfaces are the faces joined across edges of exactly
--- two faces (a film between triple lines), each oriented consistently; bodies are closed by
--- films, and an edge between two fixed vertices on a film's border is a wire. Anything else
--- (constraints, boundaries, quantities, torus models, gravity, ...) is one error naming the
--- keyword and the line, never a wrong cluster.
+-- The subset read: `vertices` (coordinates, `fixed`, `constraint N`, or a parameter with
+-- `boundary N`), `edges` (end points, `fixed`, `constraint`, `boundary`), `faces` (oriented
+-- edge loops; `tension`/`density` per face), `bodies` (signed faces, `volume`, a `density`
+-- when `gravity_constant 0`), `constraint N` with `formula:` (an equality: a plane wall when
+-- the formula is affine, else a function wall; an `energy:` integrand only if it vanishes,
+-- i.e. a 90-degree contact angle), `boundary N parameters 1` with `x1: x2: x3:` in p1 (its
+-- vertices must be fixed: placed on the curve at their parameter, the edges between them
+-- wires), `PARAMETER name = value`, `#define name value`, comments (`//`, `/* */`), and
+-- expressions (pi, e, sin, cos, tan, sqrt, exp, log, abs, atan, asin, acos, ^). Everything
+-- after `read` is Evolver's command section and is not run. Faces of tension 0 that no body
+-- uses are display only (Evolver's table tops) and are dropped. As Evolver does, a face of
+-- more than three edges gets a vertex at its centroid and a triangle per edge (so the counts
+-- and areas after reading are Evolver's). froth's surfaces are the faces joined across edges
+-- of exactly two faces (a film between triple lines), each oriented consistently; bodies are
+-- closed by films and walls, and an edge between two fixed vertices on a film's border is a
+-- wire. Anything else (inequality constraints, content integrands, sliding boundary
+-- vertices, quantities, torus models, gravity, volconst, ...) is one error naming the keyword
+-- and the line, never a wrong cluster.
 local M = {}
 
 local unsupported = {
-  constraint = "constraints (walls given as level sets)",
-  boundary = "parametric boundaries (wires with parameters)",
   quantity = "named quantities", method_instance = "method instances",
   torus = "the torus model", torus_filled = "the torus model", periods = "the torus model",
-  symmetry_group = "symmetry groups", gravity_constant = "gravity", gravity = "gravity",
+  symmetry_group = "symmetry groups", gravity = "gravity",
   string = "the string model", lagrange_order = "Lagrange elements",
   space_dimension = "other space dimensions", simplex_representation = "the simplex model",
-  quadratic = "the quadratic model", volconst = "volconst", content = "constraint contents",
-  energy = "constraint energies",
+  quadratic = "the quadratic model", volconst = "volconst",
 }
 
 local function fail(path, line, fmt, ...)
@@ -65,18 +69,114 @@ local function evaluator(path, params)
   end
 end
 
+--- A Lua function of the named variables from an Evolver expression (x1..x3 are x, y, z; p1 is
+--- a boundary's parameter), with the parameters and math of the evaluator; checked by one call.
+local function compile(path, line, text, variables, params)
+  if not text:match("^[%w%.%+%-%*/%^%(%)_%s]+$") then
+    fail(path, line, "'%s' is not an expression froth reads", text)
+  end
+  -- Evolver's names are case-insensitive: parameters are stored lower-case.
+  local lua = text:lower():gsub("%f[%w_]x([123])%f[^%w_]", function(d) return ({"x", "y", "z"})[tonumber(d)] end)
+  local env = {pi = math.pi, e = math.exp(1), sin = math.sin, cos = math.cos, tan = math.tan,
+               sqrt = math.sqrt, exp = math.exp, log = math.log, abs = math.abs,
+               atan = math.atan, asin = math.asin, acos = math.acos}
+  local args = {}
+  setmetatable(env, {__index = function(_, k)
+    if args[k] ~= nil then return args[k] end
+    return params[k:lower()]
+  end})
+  local chunk = load("return " .. lua, "=expression", "t", env)
+  if not chunk then fail(path, line, "'%s' is not an expression froth reads", text) end
+  local f = function(...)
+    local values = table.pack(...)
+    for k, name in ipairs(variables) do args[name] = values[k] end
+    local ok, v = pcall(chunk)
+    if not ok or type(v) ~= "number" then
+      error(("read: %s:%d: '%s' cannot be evaluated: %s"):format(path, line, text, tostring(v)), 0)
+    end
+    return v
+  end
+  local probe = {}
+  for k = 1, #variables do probe[k] = 0.1 * k end
+  local ok, msg = pcall(f, table.unpack(probe))
+  if not ok then error(msg, 0) end
+  return f
+end
+
+--- The part of an element line after "key:" (the expression, spaces included).
+local function after_colon(t)
+  return (table.concat(t, " "):match(":%s*(.-)%s*$"))
+end
+
+--- `constraint N [attributes]` and the lines that belong to it: formula, energy e1..e3, content.
+local function read_constraint_line(path, n, t, data, current, params)
+  local key = t[1]:lower():match("^([%a_]%w*):?") or ""
+  if key == "formula" or key == "function" then
+    local text = after_colon(t)
+    local lhs, rhs = text:match("^(.-)=(.*)$")
+    current.formula = compile(path, n, lhs and ("(" .. lhs .. ")-(" .. rhs .. ")") or text,
+                              {"x", "y", "z"}, params)
+    current.formula_text = text
+  elseif key == "energy" or key == "content" then
+    current.integrand = key
+  elseif key:match("^[ec][123]$") and current.integrand then
+    current[current.integrand] = current[current.integrand] or {}
+    current[current.integrand][tonumber(key:sub(2))] =
+      {f = compile(path, n, after_colon(t), {"x", "y", "z"}, params), text = after_colon(t)}
+  else
+    return false
+  end
+  return true
+end
+
+--- `boundary N parameters 1` and its lines x1: x2: x3: (the curve as functions of p1).
+local function read_boundary_line(path, n, t, current, params)
+  local d = t[1]:lower():match("^x([123]):?$") or t[1]:lower():match("^x([123]):")
+  if not d then return false end
+  current.x[tonumber(d)] = compile(path, n, after_colon(t), {"p1"}, params)
+  return true
+end
+
+local function start_constraint(path, n, t, data)
+  local id = math.tointeger(tonumber(t[2]))
+  if not id then fail(path, n, "constraint needs a number") end
+  for k = 3, #t do
+    fail(path, n, "constraint %d is '%s': froth reads equality constraints only (walls; "
+         .. "inequalities, global and convex constraints are outside the subset)", id, t[k])
+  end
+  if data.constraints[id] then fail(path, n, "constraint %d is defined twice", id) end
+  data.constraints[id] = {line = n}
+  return data.constraints[id]
+end
+
+local function start_boundary(path, n, t, data)
+  local id = math.tointeger(tonumber(t[2]))
+  if not id then fail(path, n, "boundary needs a number") end
+  if not (t[3] and t[3]:lower() == "parameters" and t[4] == "1") or t[5] then
+    fail(path, n, "boundary %d: froth reads boundaries with 'parameters 1' only (wires)", id)
+  end
+  if data.boundaries[id] then fail(path, n, "boundary %d is defined twice", id) end
+  data.boundaries[id] = {line = n, x = {}}
+  return data.boundaries[id]
+end
+
 local sections = {vertices = true, edges = true, faces = true, facets = true, bodies = true}
 -- Model declarations that say what froth does anyway.
 local ignored = {soapfilm = true, linear = true}
 local singular = {vertices = "vertex", edges = "edge", faces = "face", bodies = "body"}
-local attribute_list = {vertices = "fixed", edges = "fixed, color", faces = "tension, density, color",
-                        bodies = "volume"}
--- The attributes each section may carry (colors are display only and ignored).
+local attribute_list = {vertices = "fixed, constraint, boundary",
+                        edges = "fixed, constraint, boundary, no_refine, color",
+                        faces = "tension, density, constraint, no_refine, fixed, color",
+                        bodies = "volume, density"}
+-- The attributes each section may carry (colors are display only and ignored; no_refine and a
+-- fixed face only on display faces, which froth drops; a body's density only without gravity).
 local allowed = {
-  vertices = {fixed = true},
-  edges = {fixed = true, color = true},
-  faces = {tension = true, density = true, color = true, frontcolor = true, backcolor = true},
-  bodies = {volume = true},
+  vertices = {fixed = true, constraint = true, constraints = true, boundary = true},
+  edges = {fixed = true, color = true, constraint = true, constraints = true, boundary = true,
+           no_refine = true},
+  faces = {tension = true, density = true, color = true, frontcolor = true, backcolor = true,
+           constraint = true, constraints = true, no_refine = true, fixed = true},
+  bodies = {volume = true, density = true},
 }
 
 --- PARAMETER name = value or #define name value: stores the value in params.
@@ -102,12 +202,22 @@ local function read_attributes(path, n, t, i, section, eval)
       fail(path, n, "the attribute '%s' of %s %s is outside the .fe subset froth reads (%s)",
            t[i], section == "edges" and "an" or "a", singular[section], attribute_list[section])
     end
-    if a == "fixed" then
-      attrs.fixed = true
+    if a == "fixed" or a == "no_refine" then
+      attrs[a] = true
     elseif a == "tension" or a == "density" or a == "volume" then
       if not t[i + 1] then fail(path, n, "'%s' needs a value", t[i]) end
-      attrs[a == "density" and "tension" or a] = eval(t[i + 1], n)
+      local key = a == "density" and (section == "bodies" and "density" or "tension") or a
+      attrs[key] = eval(t[i + 1], n)
       i = i + 1
+    elseif a == "constraint" or a == "constraints" or a == "boundary" then
+      local ids = {}
+      while t[i + 1] and math.tointeger(tonumber(t[i + 1])) do
+        ids[#ids + 1] = math.tointeger(tonumber(t[i + 1]))
+        i = i + 1
+      end
+      if #ids == 0 then fail(path, n, "'%s' needs a number", t[i]) end
+      if a == "boundary" and #ids ~= 1 then fail(path, n, "'boundary' takes one number") end
+      attrs[a == "boundary" and "boundary" or "constraints"] = a == "boundary" and ids[1] or ids
     else
       i = i + 1 -- a color: display only
     end
@@ -131,9 +241,16 @@ local function read_element(path, n, t, section, params, eval)
   end
   local attrs = read_attributes(path, n, t, i, section, eval)
   if section == "vertices" then
-    if #numbers ~= 3 then fail(path, n, "vertex %d needs 3 coordinates, got %d", id, #numbers) end
-    return id, {x = {eval(numbers[1], n), eval(numbers[2], n), eval(numbers[3], n)},
-                fixed = attrs.fixed, line = n}
+    local v = {fixed = attrs.fixed, constraints = attrs.constraints, boundary = attrs.boundary,
+               line = n}
+    if attrs.boundary then -- the vertex is given by its parameter on the boundary curve
+      if #numbers ~= 1 then fail(path, n, "vertex %d on a boundary needs 1 parameter, got %d", id, #numbers) end
+      v.p = eval(numbers[1], n)
+    else
+      if #numbers ~= 3 then fail(path, n, "vertex %d needs 3 coordinates, got %d", id, #numbers) end
+      v.x = {eval(numbers[1], n), eval(numbers[2], n), eval(numbers[3], n)}
+    end
+    return id, v
   end
   local ids = {}
   for k, x in ipairs(numbers) do
@@ -145,12 +262,14 @@ local function read_element(path, n, t, section, params, eval)
   end
   if section == "edges" then
     if #ids ~= 2 then fail(path, n, "edge %d needs 2 vertices, got %d", id, #ids) end
-    return id, {ids[1], ids[2], fixed = attrs.fixed, line = n}
+    return id, {ids[1], ids[2], fixed = attrs.fixed, no_refine = attrs.no_refine,
+                boundary = attrs.boundary, line = n}
   elseif section == "faces" then
     if #ids < 3 then fail(path, n, "face %d needs at least 3 edges", id) end
-    return id, {loop = ids, tension = attrs.tension or 1, line = n}
+    return id, {loop = ids, tension = attrs.tension or 1, no_refine = attrs.no_refine,
+                fixed = attrs.fixed, constraints = attrs.constraints, line = n}
   end
-  return id, {faces = ids, volume = attrs.volume, line = n}
+  return id, {faces = ids, volume = attrs.volume, density = attrs.density, line = n}
 end
 
 --- Parses the datafile: {vertices = {{x, fixed}}, edges = {{a, b, fixed}}, faces = {{loop,
@@ -158,13 +277,25 @@ end
 local function parse(path, lines)
   local params = {}
   local eval = evaluator(path, params)
-  local data = {vertices = {}, edges = {}, faces = {}, bodies = {}}
-  local section
+  local data = {vertices = {}, edges = {}, faces = {}, bodies = {}, constraints = {},
+                boundaries = {}, gravity = 1}
+  local section, current
   for _, l in ipairs(lines) do
     local t, n = l.tokens, l.n
     local key = t[1]:lower()
     if key == "read" then break end
-    if key == "parameter" or key == "#define" then
+    if section == "constraint" and read_constraint_line(path, n, t, data, current, params) then
+      -- a line of the constraint above
+    elseif section == "boundary" and read_boundary_line(path, n, t, current, params) then
+      -- a coordinate of the boundary above
+    elseif key == "constraint" then
+      current, section = start_constraint(path, n, t, data), "constraint"
+    elseif key == "boundary" then
+      current, section = start_boundary(path, n, t, data), "boundary"
+    elseif key == "gravity_constant" then
+      if not t[2] or t[3] then fail(path, n, "gravity_constant needs one value") end
+      data.gravity, section = eval(t[2], n), nil
+    elseif key == "parameter" or key == "#define" then
       read_definition(path, n, t, params, eval)
       section = nil
     elseif sections[key] then
@@ -173,7 +304,11 @@ local function parse(path, lines)
       section = nil
     elseif unsupported[key] ~= nil or (section == nil and not tonumber(key)) then
       fail(path, n, "'%s' (%s) is outside the .fe subset froth reads (vertices, edges, faces, "
-           .. "bodies, fixed, tension, volume, PARAMETER, #define)", t[1], unsupported[key] or "unknown keyword")
+           .. "bodies, fixed, tension, volume, constraint, boundary, PARAMETER, #define)", t[1], unsupported[key] or "unknown keyword")
+    elseif section == "constraint" or section == "boundary" then
+      fail(path, n, "'%s' is not a line of a %s froth reads (%s)", t[1], section,
+           section == "constraint" and "formula:, energy: e1: e2: e3:, content: c1: c2: c3:"
+           or "x1:, x2:, x3:")
     else
       local id, record = read_element(path, n, t, section, params, eval)
       if data[section][id] then fail(path, n, "%s %d is defined twice", singular[section], id) end
@@ -277,33 +412,109 @@ local function bodies_of(path, data, groups, group)
   return bodies, volumes
 end
 
+--- The walls of the constraints: a plane when the formula is affine (tested at the origin,
+--- the unit vectors and two generic points), else a function wall named "constraint N".
+--- Energy integrands must vanish (froth's walls have 90-degree contact); contents are refused
+--- (froth closes bodies on walls itself, with exact lid volumes).
+local function walls_of(path, data, froth)
+  local ids, walls, index = {}, {}, {}
+  for id in pairs(data.constraints) do ids[#ids + 1] = id end
+  table.sort(ids)
+  local probes = {{0.3, -0.7, 0.45}, {-1.3, 0.2, 2.1}, {0.05, 1.7, -0.9}}
+  for _, id in ipairs(ids) do
+    local k = data.constraints[id]
+    if not k.formula then fail(path, k.line, "constraint %d has no formula", id) end
+    if k.content then
+      fail(path, k.line, "constraint %d has a content integrand: froth closes bodies on walls "
+           .. "itself (exact lid volumes), so a datafile's volume correction is not read", id)
+    end
+    for d, e in pairs(k.energy or {}) do
+      for _, x in ipairs(probes) do
+        if math.abs(e.f(x[1], x[2], x[3])) > 1e-12 then
+          fail(path, k.line, "constraint %d has the energy integrand e%d: %s, which is not zero: "
+               .. "froth's walls have 90-degree contact angles (a wetting energy is not modelled)",
+               id, d, e.text)
+        end
+      end
+    end
+    local F = k.formula
+    local b = F(0, 0, 0)
+    local n = {F(1, 0, 0) - b, F(0, 1, 0) - b, F(0, 0, 1) - b}
+    local affine = true
+    for _, x in ipairs(probes) do
+      local lin = b + n[1] * x[1] + n[2] * x[2] + n[3] * x[3]
+      affine = affine and math.abs(F(x[1], x[2], x[3]) - lin) <= 1e-12 * (1 + math.abs(lin))
+    end
+    if affine and (n[1] ~= 0 or n[2] ~= 0 or n[3] ~= 0) then
+      walls[#walls + 1] = froth.plane{normal = n, offset = -b}
+    else
+      walls[#walls + 1] = froth.wall{name = "constraint " .. id, F = F}
+    end
+    index[id] = #walls
+  end
+  return walls, index
+end
+
+--- Faces of tension 0 that no body uses are for display (Evolver's table tops): dropped, with
+--- the edges and vertices only they use. Returns the kept face ids in order.
+local function kept_faces(path, data)
+  local in_body = {}
+  for _, b in pairs(data.bodies) do
+    for _, sf in ipairs(b.faces) do in_body[math.abs(sf)] = true end
+    if b.density and b.density ~= 0 and data.gravity ~= 0 then
+      fail(path, b.line, "a body has density %g with gravity_constant %g: gravity is outside "
+           .. "the .fe subset froth reads (set gravity_constant 0)", b.density, data.gravity)
+    end
+  end
+  local order = {}
+  for id, f in pairs(data.faces) do
+    if f.tension ~= 0 or in_body[id] then
+      if f.no_refine or f.fixed then
+        fail(path, f.line, "face %d is %s: froth drops only display faces (tension 0, in no "
+             .. "body); a film is refined and moved whole", id, f.no_refine and "no_refine" or "fixed")
+      end
+      order[#order + 1] = id
+    end
+  end
+  table.sort(order)
+  if #order == 0 then error("read: " .. path .. ": no faces", 0) end
+  return order
+end
+
+--- Positions of the vertices: their coordinates, or on a boundary the curve at the parameter.
+--- Boundary vertices must be fixed (froth holds them; sliding along a curve is not modelled).
+local function vertex_position(path, data, id, v)
+  if not v.boundary then return v.x end
+  local b = data.boundaries[v.boundary]
+  if not b then fail(path, v.line, "vertex %d is on boundary %d, which is not defined", id, v.boundary) end
+  if not (b.x[1] and b.x[2] and b.x[3]) then fail(path, b.line, "boundary %d needs x1:, x2: and x3:", v.boundary) end
+  if not v.fixed then
+    fail(path, v.line, "vertex %d slides along boundary %d: froth holds boundary vertices fixed "
+         .. "(give it 'fixed'; sliding along a curve is not modelled yet)", id, v.boundary)
+  end
+  return {b.x[1](v.p), b.x[2](v.p), b.x[3](v.p)}
+end
+
 --- The cluster of an Evolver datafile's text (froth.read reads the file, with its limits, and
 --- calls this; path names the file in messages). opts must be empty: an .fe file says its
---- fixed vertices itself, and walls would come from constraints, which this subset refuses.
+--- fixed vertices and its walls (constraints) itself.
 function M.from_text(text, path, opts)
   local froth = require("froth")
   if opts ~= nil then
     if type(opts) ~= "table" then error("read: expected an option table {...}, got " .. type(opts), 0) end
     for k in pairs(opts) do
       error(("read: option '%s' is not used for an .fe file (the datafile itself says which "
-             .. "vertices are fixed; its constraints are not read)"):format(tostring(k)), 0)
+             .. "vertices are fixed and where its walls are)"):format(tostring(k)), 0)
     end
   end
   local data = parse(path, tokenize(path, text))
-  -- Vertices in id order; ids may have gaps (Evolver allows it).
-  local vid, V, fixed = {}, {}, {}
-  local vids = {}
-  for id in pairs(data.vertices) do vids[#vids + 1] = id end
-  table.sort(vids)
-  if #vids == 0 then error("read: " .. path .. ": no vertices", 0) end
-  for _, id in ipairs(vids) do
-    V[#V + 1] = data.vertices[id].x
-    vid[id] = #V
-    if data.vertices[id].fixed then fixed[#fixed + 1] = #V end
-  end
+  local walls, wall_of = walls_of(path, data, froth)
+  local position = {}
+  for id, v in pairs(data.vertices) do position[id] = vertex_position(path, data, id, v) end
+  if next(position) == nil then error("read: " .. path .. ": no vertices", 0) end
   for id, e in pairs(data.edges) do
     for _, v in ipairs{e[1], e[2]} do
-      if not vid[v] then fail(path, e.line, "edge %d uses vertex %s, which is not defined", id, tostring(v)) end
+      if not data.vertices[v] then fail(path, e.line, "edge %d uses vertex %s, which is not defined", id, tostring(v)) end
       -- froth fixes vertices, not edges: a fixed edge must have fixed ends (a wire).
       if e.fixed and not data.vertices[v].fixed then
         fail(path, e.line, "edge %d is fixed but its vertex %d is not (froth holds vertices; fix "
@@ -311,11 +522,25 @@ function M.from_text(text, path, opts)
       end
     end
   end
-  local order, loops = {}, {}
-  for id in pairs(data.faces) do order[#order + 1] = id end
-  table.sort(order)
-  if #order == 0 then error("read: " .. path .. ": no faces", 0) end
+  local order = kept_faces(path, data)
+  local loops = {}
   for _, id in ipairs(order) do loops[id] = face_vertices(path, data, id, data.faces[id]) end
+  -- Vertices in id order (ids may have gaps, as Evolver allows), those the kept faces use.
+  local used, vids = {}, {}
+  for _, id in ipairs(order) do for _, v in ipairs(loops[id]) do used[v] = true end end
+  for id in pairs(used) do vids[#vids + 1] = id end
+  table.sort(vids)
+  local vid, V, fixed = {}, {}, {}
+  for _, id in ipairs(vids) do
+    V[#V + 1] = position[id]
+    vid[id] = #V
+    if data.vertices[id].fixed then fixed[#fixed + 1] = #V end
+  end
+  for id, e in pairs(data.edges) do
+    if e.no_refine and used[e[1]] and used[e[2]] then
+      fail(path, e.line, "edge %d is no_refine: froth refines every edge of a film", id)
+    end
+  end
   local line_of = {}
   for id, face in pairs(data.faces) do line_of[id] = face.line end
   local groups, group, flip = surfaces_of(path, loops, order, line_of)
@@ -350,7 +575,23 @@ function M.from_text(text, path, opts)
   end
   local bodies, volumes = bodies_of(path, data, groups, group)
   local c = froth.cluster{vertices = V, surfaces = surfaces, bodies = bodies,
-                          fixed = #fixed > 0 and fixed or nil}
+                          walls = #walls > 0 and walls or nil, fixed = #fixed > 0 and fixed or nil}
+  -- Every vertex the datafile puts on a constraint must be held by its wall: froth attaches
+  -- the borders of films to walls, not vertices inside a film.
+  local records = c:vertices()
+  for _, id in ipairs(vids) do
+    for _, k in ipairs(data.vertices[id].constraints or {}) do
+      if not wall_of[k] then fail(path, data.vertices[id].line, "vertex %d is on constraint %d, which is not defined", id, k) end
+      local attached = false
+      for _, w in ipairs(records[vid[id]].walls) do
+        attached = attached or w == wall_of[k]
+      end
+      if not attached and not data.vertices[id].fixed then
+        fail(path, data.vertices[id].line, "vertex %d is on constraint %d but not on the free "
+             .. "border of a film: froth holds only film borders on walls", id, k)
+      end
+    end
+  end
   for b, v in pairs(volumes) do c:set_volume(b, v) end
   return c
 end

@@ -7,6 +7,13 @@
 -- total_area; gogo; (the same printf); quit;
 --   quad.fe: vertices 5 facets 4 area 4.47213595499958; after gogo 145 / 256 / 4.31820294721113
 --   cube.fe: vertices 14 facets 24 area 6;              after gogo 194 / 384 / 4.85445981487675
+-- drop_on_table.fe (mound.fe's layout) and ring_band.fe (cat.fe's) are froth's own; Evolver's
+-- numbers for them were printed by evolver -x -f d.cmd drop_on_table.fe with d.cmd =
+-- print count(vertex where not fixed,1); print count(facet where density > 0,1);
+-- print sum(facet where density > 0, area); print body[1].volume; gogo; (the same); q:
+--   drop_on_table.fe: 13 / 20 / 5 / 1; after its gogo (r; g 5; r; g 5; hessian; hessian)
+--   169 / 320 / energy 3.85442842247915 / volume 1.00000000228983
+--   ring_band.fe (print vertex_count, facet_count, total_area): 12 / 16 / 4.5254833995939
 local T = require("froth.test")
 local here = debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$") or "."
 local dir = here .. "/../data/fe/"
@@ -76,10 +83,30 @@ local function refused(text, expected, what)
   T.assert_true(not ok and tostring(err):find(expected, 1, true) ~= nil, what, tostring(err))
 end
 local tri = "vertices\n1 0 0 0 fixed\n2 1 0 0 fixed\n3 0 1 0 fixed\nedges\n1 1 2 fixed\n2 2 3 fixed\n3 3 1 fixed\n"
-refused("constraint 1\nformula: z = 0\n" .. tri, ":1: 'constraint' (constraints (walls given as level sets)) is outside the .fe subset",
-        "a constraint is refused with its line")
-refused((tri:gsub("1 0 0 0 fixed", "1 0 0 0 boundary 1")), ":2: the attribute 'boundary' of a vertex is outside the .fe subset",
+refused("quantity q energy method facet_area\n" .. tri, ":1: 'quantity' (named quantities) is outside the .fe subset",
+        "a quantity is refused with its line")
+refused((tri:gsub("1 0 0 0 fixed", "1 0 0 0 volconst 1")), ":2: the attribute 'volconst' of a vertex is outside the .fe subset",
         "an attribute froth does not model")
+-- Constraints and boundaries: what froth cannot model is refused, with the line.
+local plane = "constraint 1\nformula: z = 0\n"
+refused("constraint 1 nonnegative\nformula: z = 0\n" .. tri, ":1: constraint 1 is 'nonnegative': froth reads equality constraints only",
+        "an inequality constraint")
+refused(plane .. "energy:\ne1: -(0.5*y)\ne2: 0\ne3: 0\n" .. tri, "constraint 1 has the energy integrand e1: -(0.5*y), which is not zero",
+        "a contact angle other than 90 degrees")
+refused(plane .. "content:\nc1: 0\nc2: 0\nc3: z\n" .. tri, "constraint 1 has a content integrand", "a volume correction")
+refused(plane .. "convex\n" .. tri, ":3: 'convex' is not a line of a constraint froth reads", "an unknown constraint line")
+refused("constraint 1\nenergy:\n" .. tri, "constraint 1 has no formula", "a constraint without a formula")
+refused("constraint 1\nformula: z = q\n" .. tri, "'(z )-( q)' cannot be evaluated", "an undefined name in a formula")
+refused((tri:gsub("1 0 0 0 fixed", "1 0 boundary 1 fixed")), "vertex 1 is on boundary 1, which is not defined", "an undefined boundary")
+refused("boundary 1 parameters 2\n" .. tri, ":1: boundary 1: froth reads boundaries with 'parameters 1' only", "a two-parameter boundary")
+refused("boundary 1 parameters 1\nx1: p1\nx2: 0\nx3: 0\n" .. (tri:gsub("1 0 0 0 fixed", "1 0 boundary 1")),
+        "vertex 1 slides along boundary 1: froth holds boundary vertices fixed", "a sliding boundary vertex")
+refused("gravity_constant 2\n" .. tri .. "faces\n1 1 2 3\nbodies\n1 1 density 1\n", "gravity is outside the .fe subset",
+        "gravity on a body with density")
+refused(tri .. "faces\n1 1 2 3 no_refine\n", "face 1 is no_refine: froth drops only display faces", "no_refine on a film")
+refused(plane .. "vertices\n1 0 0 1 constraint 1\n2 1 0 1\n3 0 1 1\nedges\n1 1 2\n2 2 3\n3 3 1\nfaces\n1 1 2 3\n",
+        "vertex 1 (0, 0, 1) of surface 1 is on a free boundary edge (1-3) but on no wall",
+        "a constraint vertex off its wall")
 refused((tri:gsub("1 1 2 fixed", "1 1 2 tension 2")), ":6: the attribute 'tension' of an edge", "an edge tension (the string model)")
 refused((tri:gsub("2 1 0 0 fixed", "2 1 0 0")), ":6: edge 1 is fixed but its vertex 2 is not", "a fixed edge with a free end")
 refused(tri .. "faces\n1 1 2 -3\n", "face 1: edge -3 does not start where edge 2 ends", "a broken edge loop")
@@ -92,6 +119,38 @@ refused("vertices\n1 0 0 1/(\n", "'1/(' is not a number or an expression", "a br
 refused(tri .. "faces\n1 1 2 3\nbodies\n1 1 volume 1\n", "a wire (fixed vertices) does not close a body",
         "a body closed by wires")
 refused("/* never closed\nvertices\n", "a comment /* is not closed", "an open comment")
+
+-- mound.fe's layout: the plane constraint becomes a plane wall (its 90-degree energy is zero),
+-- the display table top is dropped, and the drop minimises to Evolver's answer and below.
+local drop = froth.read(dir .. "drop_on_table.fe")
+T.assert_equal(drop:info().vertices, 13, "drop: Evolver's 13 free vertices (the table top dropped)")
+T.assert_equal(drop:info().facets, 20, "drop: Evolver's 20 film facets")
+T.assert_near(drop:area(), 5, 1e-14, "drop: Evolver's area after reading")
+T.assert_near(drop:volumes()[1], 1, 1e-14, "drop: the body closed by the plane has Evolver's volume")
+T.assert_equal(tostring(drop:walls()[1]), "froth.Wall (plane (0, 0, 1) . x = 0)", "drop: constraint 1 is a plane")
+T.assert_equal(#drop:vertices{where = function(v) return #v.walls == 1 end}, 4, "drop: the 4 rim vertices on it")
+drop:refine()
+drop:refine()
+T.assert_equal(drop:info().vertices, 169, "drop refined: Evolver's 169 vertices")
+T.assert_equal(drop:info().facets, 320, "drop refined: Evolver's 320 facets")
+r = drop:minimize{}
+T.assert_true(r.converged, "drop: minimize converges", r.stop_reason)
+T.assert_near(drop:volumes()[1], 1, 1e-12, "drop: the volume held")
+local hemisphere = 2 * math.pi * (3 / (2 * math.pi)) ^ (2 / 3) -- volume 1, 90-degree contact
+print(("drop: froth %.10f, Evolver's gogo 3.85442842247915, hemisphere %.10f"):format(drop:area(), hemisphere))
+T.assert_true(drop:area() <= 3.85442842247915, "drop: at or below Evolver's gogo at the same mesh")
+T.assert_true(drop:area() > hemisphere and drop:area() < 1.004 * hemisphere,
+              "drop: within the discretisation error of the hemisphere", tostring(drop:area()))
+
+-- cat.fe's layout: boundary vertices placed on their curves by parameter, the rings are wires.
+local band = froth.read(dir .. "ring_band.fe")
+T.assert_equal(band:info().vertices, 12, "band: Evolver's 12 vertices")
+T.assert_equal(band:info().facets, 16, "band: Evolver's 16 facets")
+T.assert_near(band:area(), 4.5254833995939, 1e-12, "band: Evolver's area after reading")
+T.assert_equal(#band:edges{where = function(e) return e.wire end}, 8, "band: the two rings are wires")
+T.assert_near(band:vertex(2)[2], 1, 1e-15, "band: vertex 2 at parameter pi/2 of ring 1")
+T.assert_near(band:vertex(2)[3], 0.4, 1e-15, "band: on the upper ring")
+
 local ok, err = pcall(froth.read, "/nonexistent/x.fe")
 T.assert_true(not ok and tostring(err):find("read: cannot open '/nonexistent/x.fe': No such file or directory", 1, true), "a missing file", tostring(err))
 local folder = os.tmpname() .. ".fe"
