@@ -495,6 +495,28 @@ local function vertex_position(path, data, id, v)
   return {b.x[1](v.p), b.x[2](v.p), b.x[3](v.p)}
 end
 
+--- The boundaries as froth's wire curves, with the (fixed) vertices on each and their
+--- parameters: refine then puts wire midpoints on the curve, as Evolver does.
+local function curves_of(data, vids, vid)
+  local curves, of = {}, {}
+  for _, id in ipairs(vids) do
+    local v = data.vertices[id]
+    if v.boundary then
+      local k = of[v.boundary]
+      if not k then
+        local x = data.boundaries[v.boundary].x
+        curves[#curves + 1] = {name = "boundary " .. v.boundary, vertices = {}, parameters = {},
+                               x = function(p) return x[1](p), x[2](p), x[3](p) end}
+        k = #curves
+        of[v.boundary] = k
+      end
+      table.insert(curves[k].vertices, vid[id])
+      table.insert(curves[k].parameters, v.p)
+    end
+  end
+  return #curves > 0 and curves or nil
+end
+
 --- The cluster of an Evolver datafile's text (froth.read reads the file, with its limits, and
 --- calls this; path names the file in messages). opts must be empty: an .fe file says its
 --- fixed vertices and its walls (constraints) itself.
@@ -575,7 +597,8 @@ function M.from_text(text, path, opts)
   end
   local bodies, volumes = bodies_of(path, data, groups, group)
   local c = froth.cluster{vertices = V, surfaces = surfaces, bodies = bodies,
-                          walls = #walls > 0 and walls or nil, fixed = #fixed > 0 and fixed or nil}
+                          walls = #walls > 0 and walls or nil, fixed = #fixed > 0 and fixed or nil,
+                          curves = curves_of(data, vids, vid)}
   -- Every vertex the datafile puts on a constraint must be held by its wall: froth attaches
   -- the borders of films to walls, not vertices inside a film.
   local records = c:vertices()

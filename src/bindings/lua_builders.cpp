@@ -20,6 +20,14 @@
 #include <string>
 
 namespace froth::lua {
+std::function<Vec3(double)> curve_function(lua_State* L, int idx, const std::string& name) {
+    auto f = std::make_shared<LuaFunction>(L, idx, "curve '" + name + "'", "x");
+    return [f](double p) {
+        const std::vector<double> x = f->call(p, 0, 0, 3); // function(p) ignores the rest
+        return Vec3(x[0], x[1], x[2]);
+    };
+}
+
 namespace {
 
 /// Reads t[key] as a Lua array (errors name the path, e.g. "surfaces[2].facets[5]").
@@ -96,6 +104,35 @@ ClusterSpec::Surface read_surface(lua_State* L, int idx, int i) {
     return s;
 }
 
+/// curves = {{x = function(p) return x, y, z end, name, vertices = {ids}, parameters = {p}}}:
+/// wire curves and the fixed vertices on them (mesh/curves.h).
+void read_curves(lua_State* L, int idx, ClusterSpec& spec) {
+    check_array(L, idx, "curves");
+    for (int k = 1; k <= luaL_len(L, idx); ++k) {
+        lua_rawgeti(L, idx, k);
+        const int t = lua_gettop(L);
+        const std::string path = "curves[" + std::to_string(k) + "]", op = "cluster: " + path;
+        check_array(L, t, path);
+        Options co(L, t, op.c_str());
+        const std::string name = co.string("name", ("curve " + std::to_string(k)).c_str());
+        if (co.push("x") != LUA_TFUNCTION) co.error("x", "must be a function p -> x, y, z");
+        const auto x = curve_function(L, lua_gettop(L), name);
+        lua_pop(L, 1);
+        if (co.push("vertices") == LUA_TNIL) co.error("vertices", "is required");
+        const std::vector<int> ids = read_vertex_ids(L, -1, (op + ".vertices").c_str());
+        lua_pop(L, 1);
+        if (co.push("parameters") != LUA_TTABLE || luaL_len(L, -1) != static_cast<lua_Integer>(ids.size()))
+            co.error("parameters", "must be an array of one number per vertex");
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            spec.curve_points.push_back({ids[i], k - 1, number_at(L, lua_gettop(L), static_cast<int>(i) + 1,
+                                                                  path + ".parameters")});
+        lua_pop(L, 1);
+        co.finish();
+        spec.curves.push_back(std::make_shared<const Curve>(x, name));
+        lua_settop(L, idx);
+    }
+}
+
 int l_cluster(lua_State* L) {
     Options o(L, 1, "cluster");
     ClusterSpec spec;
@@ -135,6 +172,8 @@ int l_cluster(lua_State* L) {
     spec.walls = read_walls(L, -1, "cluster: walls");
     lua_pop(L, 1);
     if (o.push("fixed") != LUA_TNIL) spec.fixed = read_vertex_ids(L, -1, "cluster: fixed");
+    lua_pop(L, 1);
+    if (o.push("curves") != LUA_TNIL) read_curves(L, lua_gettop(L), spec);
     lua_pop(L, 1);
     o.finish();
     return guarded(L, [&] {

@@ -99,6 +99,10 @@ int l_vertices(lua_State* L) {
         set_bool(L, "triple_line", on_line[v]);
         set_bool(L, "quadruple_point", quadruple[v]);
         set_bool(L, "fixed", c.is_fixed(v));
+        if (const CurvePoint* cp = c.curve_point(v)) {
+            set_integer(L, "curve", cp->curve + 1);
+            set_number(L, "p", cp->p);
+        }
         keep_if(L, where, out, n);
     }
     return 1;

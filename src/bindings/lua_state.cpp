@@ -1,6 +1,7 @@
 // c:save and froth.load: a cluster and its stepper's history in a state file (io/state_file.h).
 #include "bindings/lua_state.h"
 
+#include "bindings/lua_builders.h"
 #include "bindings/lua_cluster.h"
 #include "bindings/lua_walls.h"
 #include "bindings/luax.h"
@@ -82,22 +83,42 @@ std::vector<Mobility> given_mobilities(lua_State* L, int table, const ClusterSta
     return beta;
 }
 
-/// froth.load(path[, {walls = {...}, mobilities = {...}}]): the cluster of a state file, its
+/// The wire curves the file names, from options.curves (by 1-based curve index or name).
+std::vector<CurvePtr> given_curves(lua_State* L, int table, const ClusterState& s,
+                                   const std::string& path) {
+    std::vector<CurvePtr> curves;
+    for (std::size_t k = 0; k < s.curve_names.size(); ++k) {
+        const std::string& name = s.curve_names[k];
+        if (push_entry(L, table, static_cast<int>(k), name) != LUA_TFUNCTION)
+            luaL_error(L, "load: '%s' has the wire curve '%s' (curve %d), a Lua function a file "
+                          "cannot hold; give it again: froth.load(path, {curves = {['%s'] = "
+                          "function(p) return x, y, z end}})",
+                       path.c_str(), name.c_str(), static_cast<int>(k) + 1, name.c_str());
+        curves.push_back(std::make_shared<const Curve>(curve_function(L, lua_gettop(L), name), name));
+        lua_pop(L, 1);
+    }
+    return curves;
+}
+
+/// froth.load(path[, {walls = {...}, mobilities = {...}, curves = {...}}]): the cluster of a state file, its
 /// stepper holding the saved history.
 int l_load(lua_State* L) {
     const std::string path = luaL_checkstring(L, 1);
     Options o(L, 2, "load", true);
     o.has("walls"); // marks the keys as known
     o.has("mobilities");
+    o.has("curves");
     o.finish(); // it pops its own bookkeeping: the options are pushed after it
     lua_getfield(L, 2, "walls");
     const int walls_table = lua_gettop(L);
     lua_getfield(L, 2, "mobilities");
     const int mobilities_table = lua_gettop(L);
-    for (int t : {walls_table, mobilities_table})
+    lua_getfield(L, 2, "curves");
+    const int curves_table = lua_gettop(L);
+    for (int t : {walls_table, mobilities_table, curves_table})
         if (!lua_isnil(L, t) && !lua_istable(L, t))
             luaL_error(L, "load: option '%s' must be a table",
-                       t == walls_table ? "walls" : "mobilities");
+                       t == walls_table ? "walls" : t == curves_table ? "curves" : "mobilities");
     ClusterState state;
     guarded(L, [&] {
         state = read_state_file(path);
@@ -105,9 +126,11 @@ int l_load(lua_State* L) {
     });
     const std::vector<WallPtr> walls = given_walls(L, walls_table, state, path);
     const std::vector<Mobility> beta = given_mobilities(L, mobilities_table, state, path);
+    const std::vector<CurvePtr> curves = given_curves(L, curves_table, state, path);
     return guarded(L, [&] {
         const StateResolvers given{[&](int k, const std::string&) { return walls[k]; },
-                                   [&](int i) { return beta[i]; }};
+                                   [&](int i) { return beta[i]; },
+                                   [&](int k, const std::string&) { return curves[k]; }};
         auto h = std::make_shared<ClusterHandle>(restore_cluster(state, given));
         h->stepper.restore_history(h->cluster, state.history);
         push<ClusterHandle>(L, std::move(h), kClusterType);

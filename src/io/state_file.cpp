@@ -107,6 +107,12 @@ std::string state_text(const ClusterState& s) {
     out << "fixed " << static_cast<int>(s.spec.fixed.size()) << '\n';
     for (int v : s.spec.fixed)
         out << v + 1 << '\n';
+    out << "curves " << static_cast<int>(s.curve_names.size()) << '\n';
+    for (const std::string& name : s.curve_names)
+        out << "curve " << name << '\n';
+    out << "curve_points " << static_cast<int>(s.spec.curve_points.size()) << '\n';
+    for (const CurvePoint& c : s.spec.curve_points)
+        out << c.vertex + 1 << ' ' << c.curve + 1 << ' ' << c.p << '\n';
     out << "time " << s.time << "\ninitial_area " << s.initial_area << '\n';
     out << "volumes " << static_cast<int>(s.initial_volumes.size()) << '\n';
     for (std::size_t b = 0; b < s.initial_volumes.size(); ++b)
@@ -173,6 +179,22 @@ void read_walls(io::Tokens& t, ClusterState& s) {
     }
 }
 
+void read_curves(io::Tokens& t, ClusterState& s) {
+    t.expect("curves");
+    s.curve_names.resize(t.count("curves", 2));
+    for (std::string& name : s.curve_names) {
+        t.expect("curve");
+        name = std::string(t.rest_of_line("the curve's name"));
+    }
+    t.expect("curve_points");
+    s.spec.curve_points.resize(t.count("curve points", 3));
+    for (CurvePoint& c : s.spec.curve_points) {
+        c.vertex = read_id(t, "curve point vertex id", s.spec.vertices.size());
+        c.curve = read_id(t, "curve id", s.curve_names.size());
+        c.p = t.real("curve parameter");
+    }
+}
+
 void read_history(io::Tokens& t, ClusterState& s) {
     t.expect("history");
     s.history.resize(t.count("history arrays", 3));
@@ -221,6 +243,7 @@ ClusterState parse_body(io::Tokens& t) {
     s.spec.fixed.resize(t.count("fixed vertices", 1));
     for (int& v : s.spec.fixed)
         v = read_id(t, "fixed vertex id", s.spec.vertices.size());
+    read_curves(t, s);
     t.expect("time");
     s.time = t.real("time");
     t.expect("initial_area");
@@ -263,6 +286,13 @@ ClusterState capture_state(const Cluster& c, std::vector<NamedValues> history) {
     }
     s.spec.attachments = c.wall_attachments();
     s.spec.fixed = c.fixed_vertices();
+    for (const CurvePtr& curve : c.curves()) {
+        s.curve_names.push_back(curve->name());
+        if (curve->name().find_first_of("\r\n") != std::string::npos)
+            throw InvalidInput("save: the curve '" + curve->name() +
+                               "' has a line break in its name; give it a one-line name");
+    }
+    s.spec.curve_points = c.curve_points();
     s.time = c.time();
     s.initial_area = c.initial_area();
     s.initial_volumes = c.initial_volumes();
@@ -278,6 +308,8 @@ Cluster restore_cluster(const ClusterState& state, const StateResolvers& resolve
         spec.walls.push_back(w.kind == "function" ? resolvers.wall(static_cast<int>(k), w.name)
                                                   : wall_from_parameters(w));
     }
+    for (std::size_t k = 0; k < state.curve_names.size(); ++k)
+        spec.curves.push_back(resolvers.curve(static_cast<int>(k), state.curve_names[k]));
     Cluster c(std::move(spec));
     for (int i = 0; i < c.n_surfaces(); ++i) {
         const ClusterState::Material& m = state.materials[i];

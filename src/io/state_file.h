@@ -26,9 +26,10 @@ inline constexpr int kStateFormatVersion = 1;
 /// The saved state, between a Cluster and its file.
 struct ClusterState {
     /// Vertices, surfaces (triangles, sigma), bodies (surface ids), the wall attachments, fixed
-    /// vertices; no walls.
+    /// vertices, the curve points; no walls and no curves.
     ClusterSpec spec;
     std::vector<WallParameters> walls;
+    std::vector<std::string> curve_names; ///< wire curves (Lua functions: given again by name)
     struct Material {
         std::vector<Eigen::Matrix3d> G; ///< empty: isotropic
         double r = 1.0;
@@ -46,11 +47,13 @@ struct ClusterState {
 ClusterState capture_state(const Cluster& c, std::vector<NamedValues> history);
 
 /// What a file names but cannot hold: the user-function walls (by their 0-based index in the
-/// cluster's wall list and their name) and the function mobilities (by 0-based surface id).
+/// cluster's wall list and their name), the function mobilities (by 0-based surface id) and
+/// the wire curves (by index and name).
 /// Each may throw InvalidInput saying what is missing.
 struct StateResolvers {
     std::function<WallPtr(int index, const std::string& name)> wall;
     std::function<Mobility(int surface)> mobility;
+    std::function<CurvePtr(int index, const std::string& name)> curve;
 };
 
 /// The cluster of a saved state (its history stays in the state for the stepper).

@@ -35,6 +35,10 @@ Cluster::Cluster(ClusterSpec spec) {
             initial_area_ += 0.5 * (X_[t[1]] - X_[t[0]]).cross(X_[t[2]] - X_[t[0]]).norm();
     }
     build_csr_lists(n_vertices(), vertex_surface, vs_start_, vs_list_);
+    curves_ = std::move(spec.curves);
+    curve_points_ = std::move(spec.curve_points);
+    std::sort(curve_points_.begin(), curve_points_.end(),
+              [](const CurvePoint& a, const CurvePoint& b) { return a.vertex < b.vertex; });
     fixed_.assign(n_vertices(), 0); // before the edges: a free edge between fixed vertices is a wire
     for (int v : spec.fixed) fixed_[v] = 1;
     n_fixed_ = static_cast<int>(std::count(fixed_.begin(), fixed_.end(), 1));
@@ -122,6 +126,7 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
         if (v < 0 || v >= n || w < 0 || w >= static_cast<int>(spec.walls.size()))
             throw InvalidInput("cluster: the attachment of vertex " + std::to_string(v + 1) +
                                " to wall " + std::to_string(w + 1) + " is out of range");
+    check_curve_points(spec);
     for (std::size_t w = 0; w < spec.walls.size(); ++w)
         if (!spec.walls[w]) throw InvalidInput("cluster: wall " + std::to_string(w + 1) + " is null");
     for (int v : spec.fixed)
@@ -240,6 +245,39 @@ int Cluster::pair_index(int v, int s) const {
 
 std::vector<int> Cluster::vertex_walls(int v) const {
     return {vw_list_.begin() + vw_start_[v], vw_list_.begin() + vw_start_[v + 1]};
+}
+
+const CurvePoint* Cluster::curve_point(int v) const {
+    const auto it = std::lower_bound(curve_points_.begin(), curve_points_.end(), v,
+                                     [](const CurvePoint& c, int id) { return c.vertex < id; });
+    return it != curve_points_.end() && it->vertex == v ? &*it : nullptr;
+}
+
+void Cluster::check_curve_points(const ClusterSpec& spec) const {
+    const int n = static_cast<int>(spec.vertices.size());
+    std::vector<char> fixed(n, 0), seen(n, 0);
+    for (int v : spec.fixed)
+        if (v >= 0 && v < n) fixed[v] = 1;
+    for (const CurvePtr& curve : spec.curves)
+        if (!curve) throw InvalidInput("cluster: a curve is null");
+    for (const CurvePoint& c : spec.curve_points) {
+        if (c.vertex < 0 || c.vertex >= n || c.curve < 0 ||
+            c.curve >= static_cast<int>(spec.curves.size()) || !std::isfinite(c.p))
+            throw InvalidInput("cluster: the curve point of vertex " + std::to_string(c.vertex + 1) +
+                               " on curve " + std::to_string(c.curve + 1) +
+                               " is out of range or its parameter is not finite");
+        const std::string who = vertex_name(c.vertex) + " on curve '" +
+                                spec.curves[c.curve]->name() + "'";
+        if (seen[c.vertex]++) throw InvalidInput("cluster: " + who + " is on two curves");
+        if (!fixed[c.vertex])
+            throw InvalidInput("cluster: " + who + " must be fixed (froth holds wire vertices; "
+                               "the curve places the midpoints of refined wire edges)");
+        const Vec3& x = spec.vertices[c.vertex];
+        const double d = (spec.curves[c.curve]->point(c.p) - x).norm();
+        if (!(d <= 1e-9 * (1 + x.norm())))
+            throw InvalidInput("cluster: " + who + " is at distance " + fmt(d) +
+                               " from the curve's point at p = " + fmt(c.p));
+    }
 }
 
 std::vector<std::array<int, 2>> Cluster::wall_attachments() const {

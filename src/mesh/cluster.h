@@ -9,6 +9,7 @@
 
 #include "anisotropy/mobility.h"
 #include "core/types.h"
+#include "mesh/curves.h"
 #include "mesh/walls.h"
 
 #include <array>
@@ -47,6 +48,10 @@ struct ClusterSpec {
     /// a wall within 1e-6 of a typical edge), which a state that drifted off a curved wall by
     /// the seed's linearised constraint (O(tau^2) a step) would fail.
     std::vector<std::array<int, 2>> attachments;
+    /// Wire curves and the fixed vertices on them (mesh/curves.h): each vertex at most once,
+    /// fixed, and at its curve's point x(p) (within 1e-9 of its size).
+    std::vector<CurvePtr> curves;
+    std::vector<CurvePoint> curve_points;
 };
 
 /// A surface of the cluster. Its energy density is sigma gamma(nu) (seed (1.15); gamma null:
@@ -188,6 +193,12 @@ class Cluster {
     /// wire edge (nothing changes then).
     void set_fixed(const std::vector<int>& vertices, bool fixed);
 
+    /// Wire curves (ClusterSpec::curves) and the vertices on them, in increasing vertex order.
+    const std::vector<CurvePtr>& curves() const { return curves_; }
+    const std::vector<CurvePoint>& curve_points() const { return curve_points_; }
+    /// The curve point of vertex v, or null if v is on no curve.
+    const CurvePoint* curve_point(int v) const;
+
     /// Model time, advanced by the schemes.
     double time() const { return time_; }
     void set_time(double t) { time_ = t; }
@@ -212,6 +223,7 @@ class Cluster {
 
   private:
     void check_spec(const ClusterSpec& spec) const;
+    void check_curve_points(const ClusterSpec& spec) const;
     void classify_edges();
     void build_triple_lines();
     /// \throw InvalidInput "<op>: the tensions at triple line k ... break the triangle inequality"
@@ -237,6 +249,8 @@ class Cluster {
     std::vector<BoundaryEdge> wire_edges_; // sorted by (a, b), a < b
     std::vector<int> vw_start_, vw_list_, freedom_; // CSR vertex -> walls; free directions
     bool given_attachments_ = false;                // vw_* from ClusterSpec::attachments
+    std::vector<CurvePtr> curves_;
+    std::vector<CurvePoint> curve_points_; // sorted by vertex
     std::vector<char> fixed_;                       // per vertex
     int n_fixed_ = 0;
     std::vector<double> initial_volumes_, target_volumes_;
@@ -248,8 +262,10 @@ class Cluster {
 
 /// Evolver's `r`: every facet split into four at its edge midpoints (one midpoint per edge, so
 /// triple lines, quadruple points and bodies are kept; midpoints of free boundary edges are
-/// projected onto the walls both ends lie on; the midpoint of an edge between two fixed vertices
-/// is fixed, so a fixed frame stays fixed). Tensions, anisotropies, mobilities, walls, time
+/// projected onto the walls both ends lie on; the midpoint of a wire edge, or of an edge whose
+/// facets have only fixed corners, is fixed, so a fixed frame stays fixed (an edge across a film
+/// between two fixed vertices gets a free midpoint), and on a wire edge between two vertices of one curve
+/// it is the curve's point at curve_midpoint, so a ring stays on its circle). Tensions, anisotropies, mobilities, walls, time
 /// and the reference and target volumes are carried over; the vertices of c keep their ids.
 /// Volumes are unchanged except where a curved wall's lid gains the projected midpoints.
 /// \throw what the Cluster constructor throws (it should not for a valid c).

@@ -40,6 +40,8 @@ Cluster refine(const Cluster& c) {
     // The walls stay attached as they were (a vertex that drifted off a curved wall by the
     // linearised constraint stays on it); a midpoint gets the walls its edge's ends share.
     spec.attachments = c.wall_attachments();
+    spec.curves = c.curves();
+    spec.curve_points = c.curve_points();
     // Edges shared by surfaces (triple lines) get one midpoint: keyed by the sorted pair.
     std::map<std::pair<int, int>, int> midpoint;
     std::map<std::pair<int, int>, bool> boundary;
@@ -47,7 +49,13 @@ Cluster refine(const Cluster& c) {
     const auto mid = [&](int a, int b) {
         const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
         auto [it, fresh] = midpoint.try_emplace(key, static_cast<int>(spec.vertices.size()));
-        if (fresh && boundary.count(key)) {
+        const CurvePoint *ca = c.curve_point(a), *cb = c.curve_point(b);
+        if (fresh && ca && cb && ca->curve == cb->curve && c.is_wire_edge(a, b)) {
+            const Curve& curve = *c.curves()[ca->curve];
+            const double p = curve_midpoint(curve, *ca, *cb, c.position(a), c.position(b));
+            spec.curve_points.push_back({it->second, ca->curve, p});
+            spec.vertices.push_back(curve.point(p));
+        } else if (fresh && boundary.count(key)) {
             for (int w : common_walls(c, a, b)) spec.attachments.push_back({it->second, w});
             spec.vertices.push_back(wall_midpoint(c, a, b));
         } else if (fresh) {
@@ -67,9 +75,23 @@ Cluster refine(const Cluster& c) {
         }
         spec.surfaces.push_back(std::move(out));
     }
+    // A midpoint is fixed where the edge is part of a fixed frame: a wire, or an edge whose
+    // facets are all fixed (a held face). An edge across a film between two fixed vertices
+    // (a catenoid's seam from ring to ring) gets a free midpoint, as Evolver's unfixed edges do.
+    std::map<std::pair<int, int>, bool> on_free_facet;
+    for (const Surface& s : c.surfaces())
+        for (const Tri& t : s.triangles) {
+            const bool free = !(c.is_fixed(t[0]) && c.is_fixed(t[1]) && c.is_fixed(t[2]));
+            for (int k = 0; k < 3; ++k) {
+                const int a = t[k], b = t[(k + 1) % 3];
+                on_free_facet[{std::min(a, b), std::max(a, b)}] |= free;
+            }
+        }
     spec.fixed = c.fixed_vertices();
     for (const auto& [ends, m] : midpoint)
-        if (c.is_fixed(ends.first) && c.is_fixed(ends.second)) spec.fixed.push_back(m);
+        if (c.is_fixed(ends.first) && c.is_fixed(ends.second) &&
+            (c.is_wire_edge(ends.first, ends.second) || !on_free_facet[ends]))
+            spec.fixed.push_back(m);
     for (const Body& b : c.bodies()) {
         std::vector<int> ids;
         for (const BodyFace& f : b.faces) ids.push_back(f.surface);

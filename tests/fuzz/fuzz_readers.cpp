@@ -18,6 +18,7 @@
 #include "mesh/cluster.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -48,7 +49,11 @@ froth::Cluster read_resealed_state(std::string_view text) {
         [](int, const std::string&) {
             return froth::make_function_wall([](const froth::Vec3& x) { return x[2]; }, {}, "z");
         },
-        [](int) { return froth::Mobility::constant(2); }};
+        [](int) { return froth::Mobility::constant(2); },
+        [](int, const std::string& name) {
+            return std::make_shared<const froth::Curve>(
+                [](double p) { return froth::Vec3(std::cos(p), std::sin(p), 0); }, name);
+        }};
     return froth::restore_cluster(froth::parse_state_file(sealed, "fuzz.froth"), given);
 }
 

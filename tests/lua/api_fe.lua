@@ -150,6 +150,30 @@ T.assert_near(band:area(), 4.5254833995939, 1e-12, "band: Evolver's area after r
 T.assert_equal(#band:edges{where = function(e) return e.wire end}, 8, "band: the two rings are wires")
 T.assert_near(band:vertex(2)[2], 1, 1e-15, "band: vertex 2 at parameter pi/2 of ring 1")
 T.assert_near(band:vertex(2)[3], 0.4, 1e-15, "band: on the upper ring")
+T.assert_equal(band:vertices()[2].curve, 1, "band: vertex 2 is on curve 1 (boundary 1)")
+T.assert_near(band:vertices()[2].p, math.pi / 2, 1e-15, "band: at its parameter")
+-- refine puts the rings' midpoints on the circles (Evolver's boundary), also across the seam
+-- from 3 pi / 2 to 0, whose midpoint is at 7 pi / 4 and not 3 pi / 4.
+band:refine()
+local on_ring, seam = 0, false
+for _, v in ipairs(band:vertices{where = function(v) return v.curve ~= nil end}) do
+  on_ring = on_ring + 1
+  T.assert_near(math.sqrt(v.x[1] ^ 2 + v.x[2] ^ 2), 1, 1e-14, "band refined: vertex " .. v.id .. " on its circle")
+  if math.abs(v.p - 7 * math.pi / 4) < 1e-9 then seam = true end
+end
+T.assert_equal(on_ring, 16, "band refined: 16 ring vertices, all on the curves")
+T.assert_true(seam, "band refined: the seam's midpoint at 7 pi / 4")
+T.assert_equal(#band:fixed(), 16, "band refined: the seams from ring to ring get free midpoints")
+band:refine()
+band:refine()
+r = band:minimize{tol = 1e-7}
+-- The catenoid through unit rings at +-0.4: a cosh(0.4 / a) = 1, area pi a (0.8 + a sinh(0.8 / a)).
+local a = 0.9
+for _ = 1, 60 do a = a - (a * math.cosh(0.4 / a) - 1) / (math.cosh(0.4 / a) - 0.4 / a * math.sinh(0.4 / a)) end
+local catenoid = math.pi * a * (0.8 + a * math.sinh(0.8 / a))
+print(("band: 32-gon rings, area %.10f, catenoid %.10f (relative %.1e)"):format(band:area(), catenoid,
+      band:area() / catenoid - 1))
+T.assert_true(math.abs(band:area() / catenoid - 1) < 3e-3, "band: the catenoid within the rings' polygon error")
 
 local ok, err = pcall(froth.read, "/nonexistent/x.fe")
 T.assert_true(not ok and tostring(err):find("read: cannot open '/nonexistent/x.fe': No such file or directory", 1, true), "a missing file", tostring(err))

@@ -75,12 +75,28 @@ T.assert_true(m:energy() > free:energy() + 0.1, "the held top costs energy",
               m:energy() .. " vs " .. free:energy())
 
 -- refine: old fixed vertices stay fixed; the midpoint of an edge between two fixed vertices
--- is fixed (a fixed frame stays fixed), no other.
+-- is fixed when the edge lies in the held region (every facet at it has fixed corners only; or
+-- it is a wire), no other: the top's rim edges, between the held top and the free sides, get
+-- free midpoints (Evolver's edges are fixed only when fixed themselves).
 local is_fixed, both = {}, 0
 for _, v in ipairs(fixed) do is_fixed[v] = true end
-for _, e in ipairs(c:edges()) do
-  if is_fixed[e.vertices[1]] and is_fixed[e.vertices[2]] then both = both + 1 end
+local on_free = {}
+for _, f in ipairs(c:facets()) do
+  local a, b, d = table.unpack(f.vertices)
+  local free = not (is_fixed[a] and is_fixed[b] and is_fixed[d])
+  for _, e in ipairs{{a, b}, {b, d}, {d, a}} do
+    local key = math.min(e[1], e[2]) .. "-" .. math.max(e[1], e[2])
+    on_free[key] = on_free[key] or free
+  end
 end
+local rim = 0
+for _, e in ipairs(c:edges()) do
+  local a, b = e.vertices[1], e.vertices[2]
+  if is_fixed[a] and is_fixed[b] then
+    if on_free[math.min(a, b) .. "-" .. math.max(a, b)] then rim = rim + 1 else both = both + 1 end
+  end
+end
+T.assert_true(rim > 0 and both > 0, "the top has held edges inside and rim edges", rim .. " / " .. both)
 local rc = c:clone()
 rc:refine()
 T.assert_equal(#rc:fixed(), #fixed + both, "refine: fixed vertices and the midpoints between two of them")

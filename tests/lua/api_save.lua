@@ -176,6 +176,21 @@ T.assert_equal(#c2:fixed(), #cat:fixed(), "fixed vertices kept")
 T.assert_equal(#c2:edges{where = function(e) return e.wire end},
                #cat:edges{where = function(e) return e.wire end}, "wires kept")
 
+-- Wire curves (an .fe file's boundaries) are Lua functions: given again by name or index.
+local here = debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$") or "."
+local band = froth.read(here .. "/../data/fe/ring_band.fe")
+local ring = function(z) return function(p) return math.cos(p), math.sin(p), z end end
+file = path .. "_band.froth"
+band:save(file)
+T.check_error("has the wire curve 'boundary 1' (curve 1), a Lua function a file cannot hold", froth.load, file)
+T.check_error("option 'curves' must be a table", froth.load, file, {curves = 3})
+local band2 = froth.load(file, {curves = {["boundary 1"] = ring(0.4), [2] = ring(-0.4)}})
+band:refine()
+band2:refine()
+T.assert_equal(max_difference(band, band2), 0, "wire curves: the loaded band refines onto the same curves")
+T.assert_equal(#band2:vertices{where = function(v) return v.curve end}, 16, "wire curves: the curve points kept")
+os.remove(file)
+
 -- A refined cluster whose targets were moved: the targets and the reference volumes survive.
 local tb = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
 tb:refine()

@@ -126,4 +126,44 @@ T.assert_equal(#w:fixed(), 48, "a refused unfix changes nothing")
 local body = tube(24, 8, z0)
 body.bodies = {{1}}
 T.check_error("a wire (fixed vertices) does not close a body", froth.cluster, body)
+
+-- Wire curves: the rings given as curves keep refined midpoints on the circles, so the refined
+-- film converges to the catenoid between the circles (without curves it keeps the 8-gons).
+local function with_rings(K, M)
+  local spec = tube(K, M, z0)
+  local lower, upper = {vertices = {}, parameters = {}}, {vertices = {}, parameters = {}}
+  for i = 0, K - 1 do
+    table.insert(lower.vertices, i + 1)
+    table.insert(lower.parameters, 2 * math.pi * i / K)
+    table.insert(upper.vertices, M * K + i + 1)
+    table.insert(upper.parameters, 2 * math.pi * (i + 0.5 * (M % 2)) / K)
+  end
+  lower.x = function(p) return math.cos(p), math.sin(p), -z0 end
+  upper.x = function(p) return math.cos(p), math.sin(p), z0 end
+  lower.name, upper.name = "lower ring", "upper ring"
+  spec.curves = {lower, upper}
+  return spec
+end
+local on_curves, chords = froth.cluster(with_rings(8, 4)), froth.cluster(tube(8, 4, z0))
+for _ = 1, 2 do on_curves:refine(); chords:refine() end
+on_curves:minimize{}
+chords:minimize{}
+T.assert_true(math.abs(on_curves:area() / exact - 1) < 0.2 * math.abs(chords:area() / exact - 1),
+              "curves: the refined film is far closer to the catenoid than the polygon's",
+              on_curves:area() .. " / " .. chords:area() .. " / " .. exact)
+local bad = with_rings(8, 4)
+bad.curves[1].parameters[1] = 0.1
+T.check_error("cluster: vertex 1 on curve 'lower ring' is at distance", froth.cluster, bad)
+bad = with_rings(8, 4)
+bad.fixed = nil
+T.check_error("cluster: vertex 1 on curve 'lower ring' must be fixed", froth.cluster, bad)
+bad = with_rings(8, 4)
+bad.curves[1].x = 1
+T.check_error("cluster: curves[1]: option 'x' must be a function p -> x, y, z", froth.cluster, bad)
+bad = with_rings(8, 4)
+bad.curves[1].parameters = {0}
+T.check_error("option 'parameters' must be an array of one number per vertex", froth.cluster, bad)
+bad = with_rings(8, 4)
+bad.curves[2].vertices[1] = 1
+T.check_error("cluster: vertex 1 on curve 'upper ring' is on two curves", froth.cluster, bad)
 T.summary()
