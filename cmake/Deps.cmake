@@ -2,6 +2,7 @@
 # See ../shared/docs/dependencies.md for what each package ships.
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)                      # Eigen3::Eigen
+find_package(PNG REQUIRED)                                        # PNG::PNG (snapshots)
 
 # SuiteSparse 5.12 (Debian 12) ships no CMake config; SuiteSparse >= 7 does.
 find_package(CHOLMOD CONFIG QUIET)

@@ -9,4 +9,4 @@ $SUDO apt-get update -q
 $SUDO apt-get install -y -q --no-install-recommends \
     g++ cmake ninja-build pkg-config \
     libeigen3-dev libsuitesparse-dev libopenblas0-pthread \
-    liblua5.4-dev libreadline-dev libgmsh-dev libcgal-dev libgtest-dev
+    liblua5.4-dev libreadline-dev libgmsh-dev libcgal-dev libgtest-dev libpng-dev

@@ -5,6 +5,7 @@
 #include "bindings/lua_anisotropy.h"
 #include "bindings/luax.h"
 #include "bindings/lua_queries.h"
+#include "bindings/lua_snapshot.h"
 #include "bindings/lua_state.h"
 #include "bindings/lua_statics.h"
 #include "bindings/lua_walls.h"
@@ -347,6 +348,10 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     if (!e.checkpoint.empty() &&
         !(e.checkpoint.size() > 6 && e.checkpoint.compare(e.checkpoint.size() - 6, 6, ".froth") == 0))
         e.checkpoint += ".froth";
+    e.snapshots = o.string("snapshots", "");
+    o.push("snapshot");
+    e.snapshot = read_snapshot_options(L, lua_gettop(L), "evolve: snapshot");
+    lua_pop(L, 1);
     e.project_onto_walls = o.boolean("project", false);
     e.exact_volumes = o.boolean("exact_volumes", true);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
@@ -531,6 +536,7 @@ void register_cluster_type(lua_State* L) {
     add_statics_methods(L);
     add_query_methods(L);
     add_state_methods(L);
+    add_snapshot_methods(L);
     lua_pop(L, 2);
 }
 

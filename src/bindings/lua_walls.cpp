@@ -24,21 +24,6 @@ Vec3 read_point(lua_State* L, int idx) {
     return read_xyz(L, idx, "expected a point {x, y, z}");
 }
 
-Vec3 vector_option(lua_State* L, Options& o, const char* key, const Vec3& fallback) {
-    const int t = o.push(key);
-    Vec3 v = fallback;
-    if (t != LUA_TNIL) {
-        if (t != LUA_TTABLE || luaL_len(L, -1) != 3) o.error(key, "must be {x, y, z}");
-        for (int d = 0; d < 3; ++d) {
-            if (lua_rawgeti(L, -1, d + 1) != LUA_TNUMBER) o.error(key, "must be {x, y, z}");
-            v[d] = lua_tonumber(L, -1);
-            lua_pop(L, 1);
-        }
-    }
-    lua_pop(L, 1);
-    return v;
-}
-
 int l_plane(lua_State* L) {
     Options o(L, 1, "plane", true);
     const Vec3 n = vector_option(L, o, "normal", Vec3::UnitZ());

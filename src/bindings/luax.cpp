@@ -186,4 +186,20 @@ std::vector<double> LuaFunction::call(double x, double y, double z, int n) const
     return out;
 }
 
+Eigen::Vector3d vector_option(lua_State* L, Options& o, const char* key,
+                              const Eigen::Vector3d& fallback) {
+    const int t = o.push(key);
+    Eigen::Vector3d v = fallback;
+    if (t != LUA_TNIL) {
+        if (t != LUA_TTABLE || luaL_len(L, -1) != 3) o.error(key, "must be {x, y, z}");
+        for (int d = 0; d < 3; ++d) {
+            if (lua_rawgeti(L, -1, d + 1) != LUA_TNUMBER) o.error(key, "must be {x, y, z}");
+            v[d] = lua_tonumber(L, -1);
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 1);
+    return v;
+}
+
 } // namespace froth::lua

@@ -148,6 +148,10 @@ int check_id(lua_State* L, int idx, int n, const char* kind, const char* kinds);
 /// missing or non-number entry raises `message` (e.g. "expected a point {x, y, z}").
 Eigen::Vector3d read_xyz(lua_State* L, int idx, const char* message);
 
+/// Option `key` of o as {x, y, z} (fallback if absent); an option error otherwise.
+Eigen::Vector3d vector_option(lua_State* L, Options& o, const char* key,
+                              const Eigen::Vector3d& fallback);
+
 /// t[key] = an array of integers plus offset (1 turns 0-based ids into Lua ids).
 template <class Range>
 void set_integers(lua_State* L, const char* key, const Range& values, long long offset = 0) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -73,6 +74,7 @@ class Run {
             write_history(o.history, history_);
         }
         if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper);
+        write_frame(); // the start, so a bad path fails before any step
     }
 
     /// Takes one step and everything that follows it; false ends the run.
@@ -103,6 +105,7 @@ class Run {
         if (r_.event) r_.stop_reason = "topology: " + r_.event->message;
         if (series_ && !written_last_) series_->add(c_.time(), c_, output_fields(c_));
         if (!o_.checkpoint.empty() && !saved_last_) save_state(o_.checkpoint, c_, stepper_);
+        if (!framed_last_) write_frame();
         if (!o_.history.empty()) {
             while (history_.size() > 1 && history_.back().t > c_.time()) // after a crossing
                 history_.pop_back();
@@ -156,7 +159,7 @@ class Run {
         r_.factorizations += s.refactorized;
         r_.max_energy_increase =
             std::max(r_.max_energy_increase, (s.energy - s.energy_before) / s.energy_before);
-        written_last_ = saved_last_ = false;
+        written_last_ = saved_last_ = framed_last_ = false;
         if (!o_.history.empty()) history_.push_back(history_row(s));
     }
 
@@ -184,6 +187,7 @@ class Run {
             series_->add(c_.time(), c_, output_fields(c_));
             written_last_ = true;
         }
+        if (o_.every > 0 && r_.steps % o_.every == 0) write_frame();
         if (!o_.checkpoint.empty() && o_.every > 0 && r_.steps % o_.every == 0) {
             save_state(o_.checkpoint, c_, stepper_);
             saved_last_ = true;
@@ -192,6 +196,15 @@ class Run {
             draw_progress(o_.progress, r_, s, progress());
             last_draw_ = Clock::now();
         }
+    }
+
+    /// The next picture of the snapshots series (none without `snapshots`).
+    void write_frame() {
+        framed_last_ = true;
+        if (o_.snapshots.empty()) return;
+        char number[16];
+        std::snprintf(number, sizeof number, "_%06d.png", frames_++);
+        write_snapshot(c_, o_.snapshots + number, o_.snapshot);
     }
 
     Cluster& c_;
@@ -204,7 +217,8 @@ class Run {
     std::vector<HistoryRow> history_;
     std::vector<Vec3> uncrossed_; // the last state that passed the crossing test
     double uncrossed_t_;
-    bool written_last_ = true, saved_last_ = true;
+    bool written_last_ = true, saved_last_ = true, framed_last_ = true;
+    int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();
 };
 

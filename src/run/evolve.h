@@ -3,6 +3,7 @@
 /// driver layer above the schemes (flows/) and the writers (io/); it never sees Lua.
 
 #include "flows/stepper.h"
+#include "render/snapshot.h"
 #include "run/topology_watch.h"
 
 #include <cstdio>
@@ -29,6 +30,10 @@ struct EvolveOptions {
     /// and at the end, each replacing the last: the run can be resumed from it with
     /// froth.load. Empty: none.
     std::string checkpoint;
+    /// A path stem: PNG pictures <stem>_000000.png, <stem>_000001.png, ... of the start, every
+    /// `every` steps and the end (render/snapshot.h), drawn as `snapshot` says. Empty: none.
+    std::string snapshots;
+    SnapshotOptions snapshot;
     std::FILE* progress = nullptr; ///< a terminal to draw a progress line on, or nullptr
     /// Called after every step; returning false stops the evolution.
     std::function<bool(const StepReport&)> on_step;
