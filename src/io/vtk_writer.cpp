@@ -72,14 +72,32 @@ void put_cells(io::TextBuffer& b, const Cluster& c) {
     b << "      </Cells>\n";
 }
 
-void put_cell_data(io::TextBuffer& b, const Cluster& c) {
-    b << "      <CellData Scalars=\"surface\">\n";
-    begin_array(b, "Int32", "surface");
+/// One value per facet, the value of its surface.
+template <class T> void put_surface_array(io::TextBuffer& b, const Cluster& c, const char* type,
+                                          const char* name, const std::vector<T>& of_surface) {
+    begin_array(b, type, name);
     int f = 0;
     for (int s = 0; s < c.n_surfaces(); ++s)
         for (std::size_t k = 0; k < c.surface(s).triangles.size(); ++k, ++f)
-            b << (f == 0 ? "" : f % kPerLine == 0 ? "\n" : " ") << s + 1;
+            b << (f == 0 ? "" : f % kPerLine == 0 ? "\n" : " ") << of_surface[s];
     end_array(b);
+}
+
+/// Per facet: its surface (1-based), its sigma, and the bodies on either side: body_behind is
+/// the body its normal points out of, body_front the one it points into (0: none).
+void put_cell_data(io::TextBuffer& b, const Cluster& c) {
+    std::vector<int> id(c.n_surfaces()), behind(c.n_surfaces(), 0), front(c.n_surfaces(), 0);
+    std::vector<double> sigma(c.n_surfaces());
+    for (int s = 0; s < c.n_surfaces(); ++s)
+        id[s] = s + 1, sigma[s] = c.surface(s).sigma;
+    for (int k = 0; k < c.n_bodies(); ++k)
+        for (const BodyFace& f : c.bodies()[k].faces)
+            (f.sign > 0 ? behind : front)[f.surface] = k + 1;
+    b << "      <CellData Scalars=\"surface\">\n";
+    put_surface_array(b, c, "Int32", "surface", id);
+    put_surface_array(b, c, "Float64", "sigma", sigma);
+    put_surface_array(b, c, "Int32", "body_behind", behind);
+    put_surface_array(b, c, "Int32", "body_front", front);
     b << "      </CellData>\n";
 }
 

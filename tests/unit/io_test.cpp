@@ -146,6 +146,18 @@ TEST_F(IoTest, VtuHasCountsSurfaceIdsPointsAndFields) {
     EXPECT_NE(xml.find("NumberOfPoints=\"8\" NumberOfCells=\"8\""), std::string::npos);
     EXPECT_EQ(numbers(data_array(xml, "surface")),
               (std::vector<double>{1, 1, 1, 1, 2, 2, 2, 2}));
+    EXPECT_EQ(numbers(data_array(xml, "sigma")),
+              (std::vector<double>{1, 1, 1, 1, 2, 2, 2, 2}));
+    // Each tetrahedron is one body; its facets have it behind (normal out of it) or in front.
+    const std::vector<double> behind = numbers(data_array(xml, "body_behind")),
+                              front = numbers(data_array(xml, "body_front"));
+    ASSERT_EQ(behind.size(), 8u);
+    ASSERT_EQ(front.size(), 8u);
+    for (int f = 0; f < 8; ++f) {
+        const int body = f / 4, sign = c.bodies()[body].faces[0].sign;
+        EXPECT_EQ(sign > 0 ? behind[f] : front[f], body + 1) << "facet " << f;
+        EXPECT_EQ(sign > 0 ? front[f] : behind[f], 0) << "facet " << f;
+    }
     EXPECT_EQ(numbers(data_array(xml, "types")), std::vector<double>(8, 5));
     EXPECT_EQ(numbers(data_array(xml, "offsets")),
               (std::vector<double>{3, 6, 9, 12, 15, 18, 21, 24}));
