@@ -57,27 +57,63 @@ void tune_for_factorisations() {
 
 } // namespace
 
-/// UMFPACK's estimate of the reciprocal condition number, min |U_ii| / max |U_ii|, which Eigen
-/// keeps in a protected member.
-struct UmfPackLU : Eigen::UmfPackLU<SparseMatrix> {
-    double rcond() const { return m_umfpackInfo(UMFPACK_RCOND); }
+/// UMFPACK's estimate of the reciprocal condition number, min |U_ii| / max |U_ii|, and the
+/// status of its last call, which Eigen keeps in a protected member (and folds every failure,
+/// out of memory included, into "NumericalIssue").
+template <class Matrix> struct UmfPackLUWithInfo : Eigen::UmfPackLU<Matrix> {
+    double rcond() const { return this->m_umfpackInfo(UMFPACK_RCOND); }
+    double status() const { return this->m_umfpackInfo(UMFPACK_STATUS); }
 };
+using UmfPackLU = UmfPackLUWithInfo<SparseMatrix>;
+/// UMFPACK with 64-bit indices (umfpack_dl_*): the int version's factor is limited to 2^31
+/// words, which the SD saddle point of a 186k-vertex double bubble (744k unknowns) exceeds:
+/// it returned UMFPACK_ERROR_out_of_memory at 3 GB on a 24 GB machine (issue 16).
+using SparseMatrixLong = Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>;
+using UmfPackLULong = UmfPackLUWithInfo<SparseMatrixLong>;
 
 struct SparseDirectSolver::Impl {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
     UmfPackLU lu;
+    // Set once the int version ran out of index space: then every factorisation is 64-bit
+    // (UMFPACK's solves read the matrix again, so its 64-bit copy lives here).
+    std::unique_ptr<UmfPackLULong> lu_long;
+    SparseMatrixLong A_long;
 };
+
+namespace {
+
+/// Our saddle points have a symmetric pattern: AMD/METIS on A + A' with diagonal pivots
+/// preferred; METIS nested dissection beats AMD by about 1.5x on surface meshes. UMFPACK's
+/// own iterative refinement is off: GMRES does that job (and more) for less.
+template <class LU> void configure_umfpack(LU& lu) {
+    auto& control = lu.umfpackControl();
+    control(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+    control(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
+    control(UMFPACK_IRSTEP) = 0;
+}
+
+/// Why UMFPACK did not give a usable factor, for the error message.
+template <class LU> std::string umfpack_failure(const LU& lu, long n) {
+    const double status = lu.status();
+    const std::string size = " (" + std::to_string(n) + " unknowns)";
+    if (status == UMFPACK_ERROR_out_of_memory)
+        return "UMFPACK ran out of memory factorising the system" + size;
+    if (status == UMFPACK_WARNING_singular_matrix)
+        return "the system matrix is singular: UMFPACK met a zero pivot" + size +
+               " (degenerate facets or a violated assumption (A) of the seed)";
+    if (status != UMFPACK_OK)
+        return "UMFPACK failed with status " + std::to_string(static_cast<int>(status)) + size;
+    return "the system matrix is nearly singular: UMFPACK's reciprocal condition estimate " +
+           std::to_string(lu.rcond()) + " is below 1e-14" + size +
+           " (degenerate facets or a violated assumption (A) of the seed)";
+}
+
+} // namespace
 
 std::shared_ptr<SparseDirectSolver::Impl> SparseDirectSolver::configured_impl() {
     auto impl = std::make_shared<Impl>();
     impl->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
-    // Our saddle points have a symmetric pattern: AMD/METIS on A + A' with diagonal pivots
-    // preferred; METIS nested dissection beats AMD by about 1.5x on surface meshes. UMFPACK's
-    // own iterative refinement is off: GMRES below does that job (and more) for less.
-    auto& control = impl->lu.umfpackControl();
-    control(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
-    control(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
-    control(UMFPACK_IRSTEP) = 0;
+    configure_umfpack(impl->lu);
     return impl;
 }
 
@@ -96,36 +132,60 @@ void SparseDirectSolver::factorize(const SparseMatrix& A) {
         if (!std::isfinite(A.valuePtr()[k]))
             throw SolverError(who + ": the system matrix has non-finite entries");
     if (impl_.use_count() > 1) { // shared with a copy: factorise into a fresh one (same analysis)
+        const bool long_indices = impl_->lu_long != nullptr;
         impl_ = configured_impl();
+        if (long_indices) use_long_indices();
         analyzed_ = false;
     }
     factorized_ = false;
-    bool ok;
     if (kind_ == Factorization::Cholesky) {
         if (!analyzed_) impl_->llt.analyzePattern(A);
         impl_->llt.factorize(A);
-        ok = impl_->llt.info() == Eigen::Success;
-    } else {
+        analyzed_ = true;
+        if (impl_->llt.info() != Eigen::Success)
+            throw SolverError("cholesky: the system matrix is not positive definite (degenerate "
+                              "facets or a violated assumption (A) of the seed)");
+    } else if (!impl_->lu_long) {
         if (!analyzed_) impl_->lu.analyzePattern(A);
-        if (impl_->lu.info() != Eigen::Success) throw SolverError("lu: symbolic analysis failed");
+        if (impl_->lu.status() == UMFPACK_ERROR_out_of_memory) return factorize_long(A);
+        if (impl_->lu.info() != Eigen::Success)
+            throw SolverError("lu: symbolic analysis failed: " + umfpack_failure(impl_->lu, A.rows()));
         impl_->lu.factorize(A);
+        analyzed_ = true;
+        if (impl_->lu.status() == UMFPACK_ERROR_out_of_memory) return factorize_long(A);
         // A pivot that is zero only up to round-off passes UMFPACK's own check; an rcond near
-        // machine epsilon catches it (our saddle points have 1e-7 .. 0.2 for tau 1e-6 .. 10).
-        ok = impl_->lu.info() == Eigen::Success && impl_->lu.rcond() > 1e-14;
+        // machine epsilon catches it (our saddle points have 1e-7 .. 0.3 for tau 1e-6 .. 10).
+        if (impl_->lu.info() != Eigen::Success || !(impl_->lu.rcond() > 1e-14))
+            throw SolverError("lu: " + umfpack_failure(impl_->lu, A.rows()));
+    } else {
+        return factorize_long(A);
     }
+    factorized_ = true;
+}
+
+void SparseDirectSolver::use_long_indices() {
+    impl_->lu_long = std::make_unique<UmfPackLULong>();
+    configure_umfpack(*impl_->lu_long);
+}
+
+void SparseDirectSolver::factorize_long(const SparseMatrix& A) {
+    if (!impl_->lu_long) use_long_indices(), analyzed_ = false;
+    impl_->A_long = A;
+    UmfPackLULong& lu = *impl_->lu_long;
+    if (!analyzed_) lu.analyzePattern(impl_->A_long);
+    if (lu.info() != Eigen::Success)
+        throw SolverError("lu: symbolic analysis failed: " + umfpack_failure(lu, A.rows()));
+    lu.factorize(impl_->A_long);
     analyzed_ = true;
-    if (!ok)
-        throw SolverError(who + ": the system matrix is " +
-                          (kind_ == Factorization::Cholesky ? "not positive definite" : "singular") +
-                          " (degenerate facets or a violated assumption (A) of the seed)");
+    if (lu.info() != Eigen::Success || !(lu.rcond() > 1e-14))
+        throw SolverError("lu: " + umfpack_failure(lu, A.rows()));
     factorized_ = true;
 }
 
 Eigen::MatrixXd SparseDirectSolver::solve_fresh(const SparseMatrix& A, const Eigen::MatrixXd& B) {
     if (A.rows() == 0) return B; // nothing to solve for (every vertex fixed); CHOLMOD would crash
     factorize(A);
-    Eigen::MatrixXd X = kind_ == Factorization::Cholesky ? Eigen::MatrixXd(impl_->llt.solve(B))
-                                                         : Eigen::MatrixXd(impl_->lu.solve(B));
+    Eigen::MatrixXd X = apply_factor(B);
     last_iterations_ = kRefactorAfter + 1; // a later solve() must not trust this factor blindly
     if (!X.allFinite()) throw SolverError("solve: the direct solve produced non-finite values");
     return X;
@@ -134,15 +194,15 @@ Eigen::MatrixXd SparseDirectSolver::solve_fresh(const SparseMatrix& A, const Eig
 Eigen::MatrixXd SparseDirectSolver::solve_with_last_factor(const Eigen::MatrixXd& B) const {
     if (B.rows() == 0) return B;
     if (!factorized_) throw SolverError("solve: no factorisation to reuse");
-    Eigen::MatrixXd X = kind_ == Factorization::Cholesky ? Eigen::MatrixXd(impl_->llt.solve(B))
-                                                         : Eigen::MatrixXd(impl_->lu.solve(B));
+    Eigen::MatrixXd X = apply_factor(B);
     if (!X.allFinite()) throw SolverError("solve: the direct solve produced non-finite values");
     return X;
 }
 
-Eigen::VectorXd SparseDirectSolver::apply_factor(const Eigen::VectorXd& b) const {
-    if (kind_ == Factorization::Cholesky) return impl_->llt.solve(b);
-    return impl_->lu.solve(b);
+Eigen::MatrixXd SparseDirectSolver::apply_factor(const Eigen::MatrixXd& B) const {
+    if (kind_ == Factorization::Cholesky) return impl_->llt.solve(B);
+    if (impl_->lu_long) return impl_->lu_long->solve(B);
+    return impl_->lu.solve(B);
 }
 
 Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b,
@@ -150,7 +210,7 @@ Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::Ve
     if (A.rows() == 0) return b; // every vertex fixed: an empty system, which CHOLMOD would not take
     SolveStats s;
     auto apply_A = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return A * v; };
-    auto apply_P = [&](const Eigen::VectorXd& v) { return apply_factor(v); };
+    auto apply_P = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return apply_factor(v); };
     // The backward error, not the relative residual, is what a direct solve guarantees; with
     // tau = 10 the saddle point is too ill-conditioned for a small relative residual.
     const double norm_A = A.norm(); // Frobenius: bounds the 2-norm from above

@@ -51,13 +51,19 @@ class SparseDirectSolver {
     /// column, for iterations that correct their own round-off (minimize).
     /// \throw SolverError as solve() does, or if the result is not finite.
     Eigen::MatrixXd solve_fresh(const SparseMatrix& A, const Eigen::MatrixXd& B);
+    /// LU only: factorise with UMFPACK's 64-bit version (umfpack_dl) from now on. A solver
+    /// switches by itself at the first system whose factor the int version cannot index
+    /// (UMFPACK_ERROR_out_of_memory: the 186k-vertex double bubble's SD step); public so that
+    /// the 64-bit path can be tested on small systems.
+    void use_long_indices();
     /// Applies the last factorisation to the columns of B (a matrix the factor was made for, or
     /// one near it in an iteration that tolerates that). \throw SolverError if there is none.
     Eigen::MatrixXd solve_with_last_factor(const Eigen::MatrixXd& B) const;
 
   private:
     void factorize(const SparseMatrix& A);
-    Eigen::VectorXd apply_factor(const Eigen::VectorXd& b) const;
+    void factorize_long(const SparseMatrix& A);
+    Eigen::MatrixXd apply_factor(const Eigen::MatrixXd& B) const;
     struct Impl;
     static std::shared_ptr<Impl> configured_impl();
     std::shared_ptr<Impl> impl_;
