@@ -59,6 +59,16 @@ function M.same_positions(c, X)
   return #X == c:info().vertices
 end
 
+--- The largest coordinate difference between two clusters with the same vertices.
+function M.max_difference(a, b)
+  local d = 0
+  for v = 1, a:info().vertices do
+    local x, y = a:vertex(v), b:vertex(v)
+    for k = 1, 3 do d = math.max(d, math.abs(x[k] - y[k])) end
+  end
+  return d
+end
+
 --- "surfaces/triple_lines/quadruple_points/bodies" of a cluster, for compact count checks.
 function M.counts(c)
   local i = c:info()

@@ -282,14 +282,7 @@ if not froth.has("gmsh") then return T.summary() end -- the steps below need a m
 
 -- Steps. The half-ball double bubble at h = 0.5: 186 vertices, a few ms per step.
 local db = froth.double_bubble{h = 0.5}
-local function maxdiff(a, b)
-  local d = 0
-  for v = 1, a:info().vertices do
-    local x, y = a:vertex(v), b:vertex(v)
-    for k = 1, 3 do d = math.max(d, math.abs(x[k] - y[k])) end
-  end
-  return d
-end
+local maxdiff = T.max_difference
 local function with(gamma, beta)
   local c = db:clone()
   if gamma then c:set_anisotropy("all", gamma) end

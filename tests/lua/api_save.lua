@@ -36,15 +36,7 @@ local function rewritten(text, edit)
   return body .. "checksum " .. fnv1a(body) .. "\n"
 end
 
---- Largest coordinate difference between two clusters with the same vertices.
-local function max_difference(a, b)
-  local d = 0
-  for v = 1, a:info().vertices do
-    local x, y = a:vertex(v), b:vertex(v)
-    for k = 1, 3 do d = math.max(d, math.abs(x[k] - y[k])) end
-  end
-  return d
-end
+local max_difference = T.max_difference
 
 --- Saves c, loads it back (with load_options), steps both with `go` and asserts that they stay
 --- identical. Returns the loaded cluster.
