@@ -262,11 +262,12 @@ class Cluster {
 
 /// Evolver's `r`: every facet split into four at its edge midpoints (one midpoint per edge, so
 /// triple lines, quadruple points and bodies are kept; midpoints of free boundary edges are
-/// projected onto the walls both ends lie on; the midpoint of a wire edge, or of an edge whose
-/// facets have only fixed corners, is fixed, so a fixed frame stays fixed (an edge across a film
-/// between two fixed vertices gets a free midpoint), and on a wire edge between two vertices of one curve
-/// it is the curve's point at curve_midpoint, so a ring stays on its circle). Tensions, anisotropies, mobilities, walls, time
-/// and the reference and target volumes are carried over; the vertices of c keep their ids.
+/// projected onto the walls both ends lie on). The midpoint of a wire edge, or of an edge whose
+/// facets have only fixed corners, is fixed, so a fixed frame stays fixed (an edge across a
+/// film between two fixed vertices gets a free midpoint); on a wire edge between two vertices
+/// of one curve it is the curve's point at curve_midpoint, so a ring stays on its circle.
+/// Tensions, anisotropies, mobilities, walls, wall attachments, curves, time and the reference
+/// and target volumes are carried over; the vertices of c keep their ids.
 /// Volumes are unchanged except where a curved wall's lid gains the projected midpoints.
 /// \throw what the Cluster constructor throws (it should not for a valid c).
 Cluster refine(const Cluster& c);
