@@ -54,7 +54,11 @@ std::vector<WallPtr> given_walls(lua_State* L, int table, const ClusterState& s,
                        "froth.wall{...}}})",
                        path.c_str(), w.name.c_str(), static_cast<int>(k) + 1, w.name.c_str());
         const std::string who = "load: walls['" + w.name + "']";
-        walls[k] = read_walls(L, -1, who.c_str()).front();
+        const std::vector<WallPtr> given = read_walls(L, -1, who.c_str());
+        if (given.size() != 1) // an array of walls (or an empty one) where one is needed
+            luaL_error(L, "%s must be one wall (froth.wall{F = ...}), got %d", who.c_str(),
+                       static_cast<int>(given.size()));
+        walls[k] = given.front();
         if (walls[k]->parameters().kind != "function")
             luaL_error(L,
                        "%s must be a function wall (froth.wall{F = ...}) like the saved one, "

@@ -135,6 +135,8 @@ local file = path .. "_user.froth"
 uw:save(file)
 T.check_error("the Lua function wall 'table' (wall 1)", froth.load, file)
 T.check_error("surface 1 a Lua function mobility", froth.load, file, {walls = {table = user_plane()}})
+T.check_error("load: walls['table'] must be one wall (froth.wall{F = ...}), got 0", froth.load, file,
+              {walls = {table = {}}, mobilities = {beta}})
 T.check_error("must be a function wall", froth.load, file,
               {walls = {froth.plane{normal = {0, 0, 1}}}, mobilities = {beta}})
 check_resume("user wall and mobility", uw, sd(2, 2e-3),
