@@ -48,12 +48,18 @@ local function tokenize(path, text)
   return lines
 end
 
---- Evaluates a number or expression token with the parameters and Lua's math.
-local function evaluator(path, params)
+--- The constants and functions Evolver's expressions may use; `lookup(name)` gives the rest
+--- (parameters, and a formula's variables).
+local function math_env(lookup)
   local env = {pi = math.pi, e = math.exp(1), sin = math.sin, cos = math.cos, tan = math.tan,
                sqrt = math.sqrt, exp = math.exp, log = math.log, abs = math.abs,
                atan = math.atan, asin = math.asin, acos = math.acos}
-  setmetatable(env, {__index = function(_, k) return params[k:lower()] end})
+  return setmetatable(env, {__index = function(_, k) return lookup(k) end})
+end
+
+--- Evaluates a number or expression token with the parameters and Lua's math.
+local function evaluator(path, params)
+  local env = math_env(function(k) return params[k:lower()] end)
   return function(token, line)
     local v = tonumber(token)
     if v then return v end
@@ -77,14 +83,11 @@ local function compile(path, line, text, variables, params)
   end
   -- Evolver's names are case-insensitive: parameters are stored lower-case.
   local lua = text:lower():gsub("%f[%w_]x([123])%f[^%w_]", function(d) return ({"x", "y", "z"})[tonumber(d)] end)
-  local env = {pi = math.pi, e = math.exp(1), sin = math.sin, cos = math.cos, tan = math.tan,
-               sqrt = math.sqrt, exp = math.exp, log = math.log, abs = math.abs,
-               atan = math.atan, asin = math.asin, acos = math.acos}
   local args = {}
-  setmetatable(env, {__index = function(_, k)
+  local env = math_env(function(k)
     if args[k] ~= nil then return args[k] end
     return params[k:lower()]
-  end})
+  end)
   local chunk = load("return " .. lua, "=expression", "t", env)
   if not chunk then fail(path, line, "'%s' is not an expression froth reads", text) end
   local f = function(...)
@@ -109,7 +112,7 @@ local function after_colon(t)
 end
 
 --- `constraint N [attributes]` and the lines that belong to it: formula, energy e1..e3, content.
-local function read_constraint_line(path, n, t, data, current, params)
+local function read_constraint_line(path, n, t, current, params)
   local key = t[1]:lower():match("^([%a_]%w*):?") or ""
   if key == "formula" or key == "function" then
     local text = after_colon(t)
@@ -284,7 +287,7 @@ local function parse(path, lines)
     local t, n = l.tokens, l.n
     local key = t[1]:lower()
     if key == "read" then break end
-    if section == "constraint" and read_constraint_line(path, n, t, data, current, params) then
+    if section == "constraint" and read_constraint_line(path, n, t, current, params) then
       -- a line of the constraint above
     elseif section == "boundary" and read_boundary_line(path, n, t, current, params) then
       -- a coordinate of the boundary above
