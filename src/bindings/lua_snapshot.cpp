@@ -42,7 +42,7 @@ int l_snapshot(lua_State* L) {
         const SnapshotStats s = write_snapshot(c, path, o);
         lua_createtable(L, 0, 2);
         set_number(L, "coverage", s.coverage);
-        set_integer(L, "surfaces", s.colors);
+        set_integer(L, "surfaces", s.surfaces);
         return 1;
     });
 }

@@ -193,7 +193,7 @@ std::string render_rgb(const Cluster& c, const SnapshotOptions& o, SnapshotStats
         }
     if (stats) {
         stats->coverage = static_cast<double>(covered) / (double(o.width) * o.height);
-        stats->colors = o.color == "surface" ? static_cast<int>(seen.size()) : 0;
+        stats->surfaces = o.color == "surface" ? static_cast<int>(seen.size()) : 0;
     }
     return rgb;
 }

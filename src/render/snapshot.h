@@ -26,7 +26,7 @@ struct SnapshotOptions {
 /// What the picture shows (also what the tests check).
 struct SnapshotStats {
     double coverage = 0; ///< fraction of pixels that show the cluster
-    int colors = 0;      ///< distinct surface colours visible (color "surface"; else 0)
+    int surfaces = 0;    ///< surfaces visible in the picture (color "surface"; else 0)
 };
 
 /// Renders c into an RGB image of width x height, row-major, 3 bytes per pixel.

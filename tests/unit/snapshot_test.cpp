@@ -37,7 +37,7 @@ TEST(Snapshot, ASphereFillsItsDiscOnTheBackground) {
     // The inscribed polyhedron covers slightly less than the disc.
     EXPECT_NEAR(s.coverage, disc_fraction(320, 240), 0.015);
     EXPECT_LT(s.coverage, disc_fraction(320, 240));
-    EXPECT_EQ(s.colors, 1);
+    EXPECT_EQ(s.surfaces, 1);
     const auto px = [&](int x, int y, int ch) {
         return static_cast<unsigned char>(rgb[(std::size_t(y) * 320 + x) * 3 + ch]);
     };
@@ -61,7 +61,7 @@ TEST(Snapshot, EverySurfaceOfTwinTetrahedraHasItsColour) {
     o.view = Vec3(-1, -1, -0.2);
     SnapshotStats s;
     render_rgb(c, o, &s);
-    EXPECT_GE(s.colors, 2); // the two caps from the side; the inner wall is hidden
+    EXPECT_GE(s.surfaces, 2); // the two caps from the side; the inner wall is hidden
     EXPECT_GT(s.coverage, 0.1);
     EXPECT_NE(surface_color(0), surface_color(1));
 }
