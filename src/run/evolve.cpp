@@ -103,9 +103,7 @@ class Run {
 
     EvolveResult finish(Clock::time_point start) {
         if (r_.event) r_.stop_reason = "topology: " + r_.event->message;
-        if (series_ && !written_last_) series_->add(c_.time(), c_, output_fields(c_));
-        if (!o_.checkpoint.empty() && !saved_last_) save_state(o_.checkpoint, c_, stepper_);
-        if (!framed_last_) write_frame();
+        if (!written_last_) write_state_outputs();
         if (!o_.history.empty()) {
             while (history_.size() > 1 && history_.back().t > c_.time()) // after a crossing
                 history_.pop_back();
@@ -159,7 +157,7 @@ class Run {
         r_.factorizations += s.refactorized;
         r_.max_energy_increase =
             std::max(r_.max_energy_increase, (s.energy - s.energy_before) / s.energy_before);
-        written_last_ = saved_last_ = framed_last_ = false;
+        written_last_ = false;
         if (!o_.history.empty()) history_.push_back(history_row(s));
     }
 
@@ -183,24 +181,24 @@ class Run {
     }
 
     void write_output(const StepReport& s) {
-        if (series_ && o_.every > 0 && r_.steps % o_.every == 0) {
-            series_->add(c_.time(), c_, output_fields(c_));
-            written_last_ = true;
-        }
-        if (o_.every > 0 && r_.steps % o_.every == 0) write_frame();
-        if (!o_.checkpoint.empty() && o_.every > 0 && r_.steps % o_.every == 0) {
-            save_state(o_.checkpoint, c_, stepper_);
-            saved_last_ = true;
-        }
+        if (o_.every > 0 && r_.steps % o_.every == 0) write_state_outputs();
         if (o_.progress && std::chrono::duration<double>(Clock::now() - last_draw_).count() > 0.25) {
             draw_progress(o_.progress, r_, s, progress());
             last_draw_ = Clock::now();
         }
     }
 
+    /// What is written every `every` steps and of the last state: the ParaView snapshot, the
+    /// checkpoint and the picture, each if asked for.
+    void write_state_outputs() {
+        if (series_) series_->add(c_.time(), c_, output_fields(c_));
+        if (!o_.checkpoint.empty()) save_state(o_.checkpoint, c_, stepper_);
+        write_frame();
+        written_last_ = true;
+    }
+
     /// The next picture of the snapshots series (none without `snapshots`).
     void write_frame() {
-        framed_last_ = true;
         if (o_.snapshots.empty()) return;
         char number[16];
         std::snprintf(number, sizeof number, "_%06d.png", frames_++);
@@ -217,7 +215,7 @@ class Run {
     std::vector<HistoryRow> history_;
     std::vector<Vec3> uncrossed_; // the last state that passed the crossing test
     double uncrossed_t_;
-    bool written_last_ = true, saved_last_ = true, framed_last_ = true;
+    bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();
 };
