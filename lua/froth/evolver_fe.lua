@@ -13,10 +13,12 @@
 -- more than three edges gets a vertex at its centroid and a triangle per edge (so the counts
 -- and areas after reading are Evolver's). froth's surfaces are the faces joined across edges
 -- of exactly two faces (a film between triple lines), each oriented consistently; bodies are
--- closed by films and walls, and an edge between two fixed vertices on a film's border is a
--- wire. Anything else (inequality constraints, content integrands, sliding boundary
--- vertices, quantities, torus models, gravity, volconst, ...) is one error naming the keyword
--- and the line, never a wrong cluster.
+-- closed by films, walls and wires (an edge between two fixed vertices on a film's border is a
+-- wire); a body's `volconst` selects Evolver's volume (z dx dy over its facets plus the
+-- constant, wire loops left open), so its `volume` target means what it means to Evolver.
+-- Anything else (inequality constraints, content integrands, sliding boundary vertices,
+-- quantities, torus models, gravity, ...) is one error naming the keyword and the line, never
+-- a wrong cluster.
 local M = {}
 
 local unsupported = {
@@ -25,7 +27,7 @@ local unsupported = {
   symmetry_group = "symmetry groups", gravity = "gravity",
   string = "the string model", lagrange_order = "Lagrange elements",
   space_dimension = "other space dimensions", simplex_representation = "the simplex model",
-  quadratic = "the quadratic model", volconst = "volconst",
+  quadratic = "the quadratic model",
 }
 
 local function fail(path, line, fmt, ...)
@@ -170,7 +172,7 @@ local singular = {vertices = "vertex", edges = "edge", faces = "face", bodies = 
 local attribute_list = {vertices = "fixed, constraint, boundary",
                         edges = "fixed, constraint, boundary, no_refine, color",
                         faces = "tension, density, constraint, no_refine, fixed, color",
-                        bodies = "volume, density"}
+                        bodies = "volume, volconst, density"}
 -- The attributes each section may carry (colors are display only and ignored; no_refine and a
 -- fixed face only on display faces, which froth drops; a body's density only without gravity).
 local allowed = {
@@ -179,7 +181,7 @@ local allowed = {
            no_refine = true},
   faces = {tension = true, density = true, color = true, frontcolor = true, backcolor = true,
            constraint = true, constraints = true, no_refine = true, fixed = true},
-  bodies = {volume = true, density = true},
+  bodies = {volume = true, volconst = true, density = true},
 }
 
 --- PARAMETER name = value or #define name value: stores the value in params.
@@ -207,7 +209,7 @@ local function read_attributes(path, n, t, i, section, eval)
     end
     if a == "fixed" or a == "no_refine" then
       attrs[a] = true
-    elseif a == "tension" or a == "density" or a == "volume" then
+    elseif a == "tension" or a == "density" or a == "volume" or a == "volconst" then
       if not t[i + 1] then fail(path, n, "'%s' needs a value", t[i]) end
       local key = a == "density" and (section == "bodies" and "density" or "tension") or a
       attrs[key] = eval(t[i + 1], n)
@@ -272,7 +274,7 @@ local function read_element(path, n, t, section, params, eval)
     return id, {loop = ids, tension = attrs.tension or 1, no_refine = attrs.no_refine,
                 fixed = attrs.fixed, constraints = attrs.constraints, line = n}
   end
-  return id, {faces = ids, volume = attrs.volume, density = attrs.density, line = n}
+  return id, {faces = ids, volume = attrs.volume, volconst = attrs.volconst, density = attrs.density, line = n}
 end
 
 --- Parses the datafile: {vertices = {{x, fixed}}, edges = {{a, b, fixed}}, faces = {{loop,
@@ -409,6 +411,7 @@ local function bodies_of(path, data, groups, group)
       end
     end
     table.sort(list)
+    list.volconst = b.volconst -- Evolver's volume convention (froth.cluster's bodies)
     bodies[#bodies + 1] = list
     volumes[#bodies] = b.volume
   end

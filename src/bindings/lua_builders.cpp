@@ -17,6 +17,7 @@
 
 #include <climits>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace froth::lua {
@@ -133,6 +134,19 @@ void read_curves(lua_State* L, int idx, ClusterSpec& spec) {
     }
 }
 
+/// bodies[b].volconst: Evolver's volume convention for the body (ClusterSpec::volconst).
+std::optional<double> read_volconst(lua_State* L, int body, const std::string& path) {
+    std::optional<double> v;
+    if (lua_getfield(L, body, "volconst") != LUA_TNIL) {
+        if (lua_type(L, -1) != LUA_TNUMBER)
+            luaL_error(L, "cluster: %s.volconst must be a number, got %s", path.c_str(),
+                       luaL_typename(L, -1));
+        v = lua_tonumber(L, -1);
+    }
+    lua_pop(L, 1);
+    return v;
+}
+
 int l_cluster(lua_State* L) {
     Options o(L, 1, "cluster");
     ClusterSpec spec;
@@ -164,6 +178,7 @@ int l_cluster(lua_State* L) {
                 ids.push_back(s);
             }
             spec.bodies.push_back(std::move(ids));
+            spec.volconst.push_back(read_volconst(L, lua_gettop(L), path));
             lua_pop(L, 1);
         }
     }

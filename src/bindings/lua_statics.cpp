@@ -108,17 +108,22 @@ int l_target_volumes(lua_State* L) {
     return 1;
 }
 
+/// max_b |V_b(after) - V_b(before)| / |V_b(before)|
+double volume_change(const Cluster& before, const Cluster& after) {
+    const std::vector<double> v0 = body_volumes(before), v1 = body_volumes(after);
+    double change = 0;
+    for (std::size_t b = 0; b < v1.size(); ++b)
+        change = std::max(change, std::abs(v1[b] - v0[b]) / std::abs(v0[b]));
+    return change;
+}
+
 /// c:refine() -> {vertices, facets, volume_change}
 int l_refine(lua_State* L) {
     ClusterHandle& h = self(L);
     ChangeGuard changing(L, h, "refine");
     return guarded(L, [&] {
-        const std::vector<double> before = body_volumes(h.cluster);
         Cluster refined = refine(h.cluster); // throws before anything changes
-        const std::vector<double> after = body_volumes(refined);
-        double change = 0;
-        for (std::size_t b = 0; b < after.size(); ++b)
-            change = std::max(change, std::abs(after[b] - before[b]) / before[b]);
+        const double change = volume_change(h.cluster, refined);
         h.cluster = std::move(refined);
         h.stepper.reset();
         lua_createtable(L, 0, 3);
@@ -129,8 +134,34 @@ int l_refine(lua_State* L) {
     });
 }
 
+/// c:equiangulate{max_sweeps} -> {flips, sweeps, volume_change}
+int l_equiangulate(lua_State* L) {
+    ClusterHandle& h = self(L);
+    Options o(L, 2, "equiangulate", true);
+    const long long max_sweeps = o.integer("max_sweeps", 100);
+    o.finish();
+    if (max_sweeps < 1 || max_sweeps > 1000000)
+        return luaL_error(L, "equiangulate: max_sweeps must be in 1..1000000, got %I",
+                          static_cast<lua_Integer>(max_sweeps));
+    ChangeGuard changing(L, h, "equiangulate");
+    return guarded(L, [&] {
+        EquiangulateResult r = equiangulate(h.cluster, static_cast<int>(max_sweeps));
+        const double change = r.flips ? volume_change(h.cluster, r.cluster) : 0.0;
+        if (r.flips) {
+            h.cluster = std::move(r.cluster);
+            h.stepper.reset();
+        }
+        lua_createtable(L, 0, 3);
+        set_integer(L, "flips", r.flips);
+        set_integer(L, "sweeps", r.sweeps);
+        set_number(L, "volume_change", change);
+        return 1;
+    });
+}
+
 const luaL_Reg methods[] = {
     {"refine", l_refine},
+    {"equiangulate", l_equiangulate},
     {"minimize", l_minimize},
     {"pressures", l_pressures},
     {"body_report", l_body_report},

@@ -5,6 +5,7 @@
 #include "io/text_file.h"
 #include "io/tokens.h"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <limits>
@@ -117,6 +118,12 @@ std::string state_text(const ClusterState& s) {
     out << "volumes " << static_cast<int>(s.initial_volumes.size()) << '\n';
     for (std::size_t b = 0; b < s.initial_volumes.size(); ++b)
         out << s.initial_volumes[b] << ' ' << s.target_volumes[b] << '\n';
+    // Format 2: the bodies with Evolver's volconst, as (body id, constant) pairs.
+    const auto has_volconst = [](const std::optional<double>& v) { return v.has_value(); };
+    out << "volconst "
+        << static_cast<int>(std::count_if(s.spec.volconst.begin(), s.spec.volconst.end(), has_volconst)) << '\n';
+    for (std::size_t b = 0; b < s.spec.volconst.size(); ++b)
+        if (s.spec.volconst[b]) out << static_cast<int>(b + 1) << ' ' << *s.spec.volconst[b] << '\n';
     out << "history " << static_cast<int>(s.history.size()) << '\n';
     for (const NamedValues& a : s.history) {
         out << "array " << a.name << ' ' << static_cast<int>(a.values.size()) << '\n';
@@ -215,7 +222,7 @@ void read_body(io::Tokens& t, ClusterState& s) {
     s.spec.bodies.push_back(std::move(faces));
 }
 
-ClusterState parse_body(io::Tokens& t) {
+ClusterState parse_body(io::Tokens& t, long long version) {
     ClusterState s;
     t.expect("vertices");
     s.spec.vertices.resize(t.count("vertices", 3));
@@ -257,6 +264,16 @@ ClusterState parse_body(io::Tokens& t) {
         s.initial_volumes.push_back(t.real("initial volume"));
         s.target_volumes.push_back(t.real("target volume"));
     }
+    if (version >= 2) {
+        t.expect("volconst");
+        const std::size_t n = t.count("volconst entries", 2);
+        s.spec.volconst.resize(n_bodies);
+        for (std::size_t k = 0; k < n; ++k) {
+            std::optional<double>& v = s.spec.volconst[read_id(t, "volconst body id", n_bodies)];
+            if (v) t.fail("a body has two volconst entries");
+            v = t.real("volconst");
+        }
+    }
     read_history(t, s);
     t.expect("end");
     if (!t.at_end()) t.fail("text after 'end'");
@@ -277,6 +294,7 @@ ClusterState capture_state(const Cluster& c, std::vector<NamedValues> history) {
         for (const BodyFace& f : b.faces)
             faces.push_back(f.surface);
         s.spec.bodies.push_back(std::move(faces));
+        s.spec.volconst.push_back(b.volconst);
     }
     for (const WallPtr& w : c.walls()) {
         s.walls.push_back(w->parameters());
@@ -364,8 +382,7 @@ ClusterState parse_state_file(std::string_view text, const std::string& name) {
                             "not match its contents)");
     io::Tokens t(text.substr(0, mark + 1), who + ": ");
     t.expect(kMagic);
-    t.integer("the format version", 1, kStateFormatVersion);
-    return parse_body(t);
+    return parse_body(t, t.integer("the format version", 1, kStateFormatVersion));
 }
 
 } // namespace froth

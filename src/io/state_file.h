@@ -21,7 +21,8 @@
 
 namespace froth {
 
-inline constexpr int kStateFormatVersion = 1;
+/// 2 adds the bodies' volconst (format 1 files are read as bodies without one).
+inline constexpr int kStateFormatVersion = 2;
 
 /// The saved state, between a Cluster and its file.
 struct ClusterState {
@@ -66,7 +67,7 @@ void write_state_file(const std::string& path, const ClusterState& state);
 
 /// Reads a state file: a regular file of at most max_bytes.
 /// \throw IoError "load: cannot open 'p': ...", "load: 'p' is not a froth state file ...",
-///        "load: 'p' was written by a newer froth (format N; this one reads 1)",
+///        "load: 'p' was written by a newer froth (format N; this one reads 2)",
 ///        "load: 'p' is truncated or corrupted (checksum ...)", "load: 'p': line N: ...".
 ClusterState read_state_file(const std::string& path, std::uintmax_t max_bytes = std::uintmax_t(1)
                                                                                  << 31);

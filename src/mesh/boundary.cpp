@@ -133,10 +133,11 @@ void Cluster::attach_walls() {
 }
 
 void Cluster::find_lids(Body& body) const {
-    if (boundary_edges_.empty()) return;
+    if (boundary_edges_.empty() && wire_edges_.empty()) return;
     std::vector<std::array<int, 2>> keys;
-    for (const BoundaryEdge& e : boundary_edges_)
-        keys.push_back({e.a, e.b});
+    for (const auto* list : {&boundary_edges_, &wire_edges_})
+        for (const BoundaryEdge& e : *list)
+            keys.push_back({e.a, e.b});
     std::sort(keys.begin(), keys.end());
     std::vector<std::array<int, 2>> edges;
     for (const BodyFace& f : body.faces)
@@ -182,14 +183,17 @@ double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) 
             const Wall& wall = *c.walls()[w];
             apex = wall.gradient(apex).norm() > 0 ? wall.project(apex) : X[lid.edges.front()[0]];
         }
-    // On one wall its own flux (curved walls count the lid's bulge); across walls flat fans.
-    double flux = 0;
+    // On one wall its own flux (curved walls count the lid's bulge); across walls and on wires
+    // flat fans, each triangle (apex, b, a).
+    double flux = 0, z_content = 0;
     for (const auto& e : lid.edges) {
         const Vec3 &a = X[e[0]], &b = X[e[1]];
         flux += lid.walls.size() == 1 ? c.walls()[lid.walls[0]]->fan_flux(apex, a, b)
                                       : 0.5 * apex.dot(b.cross(a));
+        if (lid.evolver_content) // z is linear on the triangle: its mean times the z-area
+            z_content += (apex[2] + a[2] + b[2]) / 3 * 0.5 * (b - apex).cross(a - apex)[2];
     }
-    return flux / 3.0;
+    return flux / 3.0 - z_content;
 }
 
 double lid_volume(const Cluster& c, const Lid& lid) {
@@ -203,7 +207,7 @@ double body_volume(const Cluster& c, const Body& body, const std::vector<Vec3>& 
             v += f.sign * cone_volume(X[t[0]], X[t[1]], X[t[2]]);
     for (const Lid& lid : body.lids)
         v += lid_volume(c, lid, X);
-    return v;
+    return v + body.volconst.value_or(0.0);
 }
 
 std::vector<int> drop_wall_lids(ClusterSpec& spec) {

@@ -62,7 +62,7 @@ Cluster::Cluster(ClusterSpec spec) {
         vertex_edge.emplace_back(junction_edges_[e].b, e);
     }
     build_csr_lists(n_vertices(), vertex_edge, vj_start_, vj_list_);
-    orient_bodies(spec.bodies);
+    orient_bodies(spec.bodies, spec.volconst);
     target_volumes_ = initial_volumes_;
 }
 
@@ -118,6 +118,33 @@ void Cluster::set_volume_references(std::vector<double> initial, std::vector<dou
     target_volumes_ = std::move(target);
 }
 
+ClusterSpec cluster_spec(const Cluster& c) {
+    ClusterSpec spec;
+    spec.vertices = c.positions();
+    for (const Surface& s : c.surfaces()) spec.surfaces.push_back({s.triangles, s.sigma});
+    for (const Body& b : c.bodies()) {
+        std::vector<int> ids;
+        for (const BodyFace& f : b.faces) ids.push_back(f.surface);
+        spec.bodies.push_back(std::move(ids));
+        spec.volconst.push_back(b.volconst);
+    }
+    spec.walls = c.walls();
+    spec.attachments = c.wall_attachments();
+    spec.fixed = c.fixed_vertices();
+    spec.curves = c.curves();
+    spec.curve_points = c.curve_points();
+    return spec;
+}
+
+void carry_over(const Cluster& from, Cluster& to) {
+    for (int i = 0; i < from.n_surfaces(); ++i) {
+        to.set_anisotropy(i, from.surface(i).gamma);
+        to.set_mobility(i, from.surface(i).beta);
+    }
+    to.set_time(from.time());
+    to.set_volume_references(from.initial_volumes(), from.target_volumes());
+}
+
 void Cluster::check_spec(const ClusterSpec& spec) const {
     const int n = static_cast<int>(spec.vertices.size());
     if (n == 0) throw InvalidInput("cluster: no vertices");
@@ -127,6 +154,14 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
             throw InvalidInput("cluster: the attachment of vertex " + std::to_string(v + 1) +
                                " to wall " + std::to_string(w + 1) + " is out of range");
     check_curve_points(spec);
+    if (!spec.volconst.empty() && spec.volconst.size() != spec.bodies.size())
+        throw InvalidInput("cluster: " + std::to_string(spec.volconst.size()) + " volconst "
+                           "entries for " + std::to_string(spec.bodies.size()) + " bodies");
+    for (std::size_t b = 0; b < spec.volconst.size(); ++b)
+        if (spec.volconst[b] && !(std::isfinite(*spec.volconst[b]) &&
+                                  std::abs(*spec.volconst[b]) <= kMaxCoordinate))
+            throw InvalidInput("cluster: body " + std::to_string(b + 1) + ": volconst must be "
+                               "a finite number, got " + fmt(*spec.volconst[b]));
     for (std::size_t w = 0; w < spec.walls.size(); ++w)
         if (!spec.walls[w]) throw InvalidInput("cluster: wall " + std::to_string(w + 1) + " is null");
     for (int v : spec.fixed)

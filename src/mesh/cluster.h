@@ -14,6 +14,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,12 @@ struct ClusterSpec {
     /// Each body as the (unsigned) ids of the surfaces that enclose it; the engine finds the
     /// signs so that every body is a closed, outward-oriented polyhedron.
     std::vector<std::vector<int>> bodies;
+    /// Evolver's `volconst` per body (empty, or one entry per body; nullopt: none). A body with
+    /// one has Evolver's volume: the integral of z dx dy over its facets plus the constant, so
+    /// the loops where its films end on wires stay open (mesh/boundary.cpp, lid_volume) and an
+    /// Evolver datafile's `volume` target means the same number. Without it such a loop is
+    /// closed by a flat lid and the volume is the one the films and lids enclose.
+    std::vector<std::optional<double>> volconst;
     /// External boundaries (seed (1.25)): every free boundary edge (an edge of one facet only)
     /// must lie on one of them, or be a wire (below); its vertices are then constrained to the
     /// wall (3.10)/(3.11).
@@ -76,18 +83,24 @@ struct BodyFace {
     int sign;
 };
 
-/// Where a body meets walls: a closed loop of free boundary edges of the body's films, each
-/// directed as the body's outward-oriented facets traverse it. The lid is the part of the walls
-/// inside the loop (on several walls when the body sits in a corner); volumes close it by a fan
-/// from the loop's center projected onto all of those walls.
+/// Where a body meets walls or wires: a closed loop of free boundary edges of the body's films,
+/// each directed as the body's outward-oriented facets traverse it. On walls the lid is the part
+/// of the walls inside the loop (on several walls when the body sits in a corner); volumes close
+/// it by a fan from the loop's center projected onto all of those walls. A loop of wire edges
+/// (fixed vertices) is closed by the flat fan from its center.
 struct Lid {
     std::vector<std::array<int, 2>> edges;
-    std::vector<int> walls; ///< the walls its edges lie on
+    std::vector<int> walls; ///< the walls its edges lie on; empty for a loop of wires
+    /// A wire loop of a body with volconst: Evolver's convention, under which the lid adds the
+    /// fan's cone volume less its integral of z dx dy (what turns the cone sum of the films and
+    /// the fan into the z dx dy sum over the films alone).
+    bool evolver_content = false;
 };
 
 struct Body {
     std::vector<BodyFace> faces;
-    std::vector<Lid> lids; ///< empty for a body enclosed by films alone
+    std::vector<Lid> lids;            ///< empty for a body enclosed by films alone
+    std::optional<double> volconst;   ///< ClusterSpec::volconst
 };
 
 /// An edge of exactly one facet: it lies on a wall (seed B_k).
@@ -228,7 +241,8 @@ class Cluster {
     void build_triple_lines();
     /// \throw InvalidInput "<op>: the tensions at triple line k ... break the triangle inequality"
     void check_tension_triangles(const char* op) const;
-    void orient_bodies(const std::vector<std::vector<int>>& body_surfaces);
+    void orient_bodies(const std::vector<std::vector<int>>& body_surfaces,
+                       const std::vector<std::optional<double>>& volconst);
     void attach_walls();
     /// How far from a wall a vertex may be and count as on it.
     double wall_tolerance() const;
@@ -260,6 +274,13 @@ class Cluster {
     int assembly_revision_ = 0;
 };
 
+/// The spec that rebuilds c: positions, surfaces (triangles, sigma), bodies and their volconst,
+/// walls and attachments, fixed vertices, curves and curve points.
+ClusterSpec cluster_spec(const Cluster& c);
+/// What a cluster rebuilt from c's spec (refine, equiangulate) takes over from c: the surfaces'
+/// anisotropies and mobilities, the time, the reference and target volumes.
+void carry_over(const Cluster& from, Cluster& to);
+
 /// Evolver's `r`: every facet split into four at its edge midpoints (one midpoint per edge, so
 /// triple lines, quadruple points and bodies are kept; midpoints of free boundary edges are
 /// projected onto the walls both ends lie on). The midpoint of a wire edge, or of an edge whose
@@ -272,6 +293,20 @@ class Cluster {
 /// \throw what the Cluster constructor throws (it should not for a valid c).
 Cluster refine(const Cluster& c);
 
+struct EquiangulateResult {
+    Cluster cluster;
+    int flips = 0;  ///< edges flipped
+    int sweeps = 0; ///< passes over the edges that flipped something
+};
+/// Evolver's `u`: flips interior edges of the films until each is locally Delaunay (the angles
+/// opposite an edge add up to at most pi), at most max_sweeps passes. Only edges inside one
+/// surface flip (never a triple line, wall or wire edge), never into an edge that exists, a
+/// degenerate or folded facet, or among four fixed corners. Vertices do not move; volumes change
+/// by what the flipped edges' tetrahedra hold (minimize restores the targets). The vertices,
+/// everything refine carries over, and the cluster itself when nothing flips, are kept.
+/// 	hrow InvalidInput for max_sweeps < 1; what the Cluster constructor throws.
+EquiangulateResult equiangulate(const Cluster& c, int max_sweeps = 100);
+
 /// Removes from spec the facets with all three corners on one of spec.walls (within 1e-6 of
 /// the mean edge length): the faces of a solid that rest on a wall are its lids, not films.
 /// Surfaces left without facets are removed (and from their bodies), unused vertices dropped
@@ -283,7 +318,8 @@ std::vector<int> drop_wall_lids(ClusterSpec& spec);
 /// of the body's facets. Exact for flat walls, also for a lid on two or three planes (each fan
 /// triangle lies in the plane of its edge). On one curved wall each fan triangle counts the
 /// flux of the wall patch it spans (Wall::fan_flux: exact for spheres and cylinders up to O(h^2),
-/// the flat triangle for user walls, which leaves out the lid's bulge).
+/// the flat triangle for user walls, which leaves out the lid's bulge). A wire loop's fan is
+/// flat; with Lid::evolver_content it adds its cones less its integral of z dx dy.
 double lid_volume(const Cluster& c, const Lid& lid);
 /// The same at positions X (one per vertex of c) instead of the cluster's own.
 double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X);
@@ -294,7 +330,8 @@ inline double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) {
     return a.dot(b.cross(c)) / 6.0;
 }
 
-/// The volume of one body at positions X: its signed facets' cones plus its lids. The one
+/// The volume of one body at positions X: its signed facets' cones plus its lids (plus its
+/// volconst, if it has one). The one
 /// volume kernel: the body orientation at construction, geometry's body_volumes and every
 /// report use it.
 double body_volume(const Cluster& c, const Body& body, const std::vector<Vec3>& X);

@@ -34,14 +34,10 @@ Vec3 wall_midpoint(const Cluster& c, int a, int b) {
 } // namespace
 
 Cluster refine(const Cluster& c) {
-    ClusterSpec spec;
-    spec.vertices = c.positions();
-    spec.walls = c.walls();
     // The walls stay attached as they were (a vertex that drifted off a curved wall by the
     // linearised constraint stays on it); a midpoint gets the walls its edge's ends share.
-    spec.attachments = c.wall_attachments();
-    spec.curves = c.curves();
-    spec.curve_points = c.curve_points();
+    ClusterSpec spec = cluster_spec(c);
+    spec.surfaces.clear();
     // Edges shared by surfaces (triple lines) get one midpoint: keyed by the sorted pair.
     std::map<std::pair<int, int>, int> midpoint;
     std::map<std::pair<int, int>, bool> boundary;
@@ -87,26 +83,15 @@ Cluster refine(const Cluster& c) {
                 on_free_facet[{std::min(a, b), std::max(a, b)}] |= free;
             }
         }
-    spec.fixed = c.fixed_vertices();
     for (const auto& [ends, m] : midpoint)
         if (c.is_fixed(ends.first) && c.is_fixed(ends.second) &&
             (c.is_wire_edge(ends.first, ends.second) || !on_free_facet[ends]))
             spec.fixed.push_back(m);
-    for (const Body& b : c.bodies()) {
-        std::vector<int> ids;
-        for (const BodyFace& f : b.faces) ids.push_back(f.surface);
-        spec.bodies.push_back(std::move(ids));
-    }
     Cluster r(std::move(spec));
     if (r.n_bodies() != c.n_bodies())
         throw TopologyError("refine: the refined cluster has " + std::to_string(r.n_bodies()) +
                             " bodies, the original " + std::to_string(c.n_bodies()));
-    for (int i = 0; i < c.n_surfaces(); ++i) {
-        r.set_anisotropy(i, c.surface(i).gamma);
-        r.set_mobility(i, c.surface(i).beta);
-    }
-    r.set_time(c.time());
-    r.set_volume_references(c.initial_volumes(), c.target_volumes());
+    carry_over(c, r);
     return r;
 }
 

@@ -3,6 +3,7 @@
 // other count is an error. Bodies get their signs by propagating orientation across shared edges.
 
 #include "core/errors.h"
+#include "core/format.h"
 #include "mesh/cluster.h"
 
 #include <algorithm>
@@ -178,7 +179,8 @@ void Cluster::build_triple_lines() {
         if (at[v].size() >= 3) quadruple_points_.push_back(v);
 }
 
-void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) {
+void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces,
+                             const std::vector<std::optional<double>>& volconst) {
     const std::vector<HalfEdge> h = collect_half_edges(surfaces_);
     for (std::size_t b = 0; b < body_surfaces.size(); ++b) {
         const std::string name = "body " + std::to_string(b + 1);
@@ -199,16 +201,13 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
             std::vector<const HalfEdge*> mine;
             for (; j < h.size() && h[j].lo == h[i].lo && h[j].hi == h[i].hi; ++j)
                 if (sign.count(h[j].surface)) mine.push_back(&h[j]);
-            const bool on_wall = j - i == 1 && !walls_.empty() && // a free boundary edge
-                                 !is_wire_edge(h[i].lo, h[i].hi);
-            if (!mine.empty() && mine.size() != 2 && !(on_wall && mine.size() == 1))
+            // A free boundary edge (on a wall or a wire) ends the body at a lid.
+            const bool free_edge = j - i == 1;
+            if (!mine.empty() && mine.size() != 2 && !(free_edge && mine.size() == 1))
                 throw TopologyError("cluster: " + name + " is not closed: " +
                                     edge_name(h[i].lo, h[i].hi) + " is in " +
                                     std::to_string(mine.size()) + " of its facets, not 2" +
-                                    (walls_.empty() ? "" : " (and is not on a wall)") +
-                                    (is_wire_edge(h[i].lo, h[i].hi)
-                                         ? "; a wire (fixed vertices) does not close a body"
-                                         : ""));
+                                    (walls_.empty() ? "" : " (and is not on a wall)"));
             if (mine.size() == 2 && mine[0]->surface != mine[1]->surface)
                 links.emplace_back(mine[0], mine[1]);
             i = j;
@@ -240,19 +239,31 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces) 
             }
         }
         // (With walls a shell may be open, closed by lids: no winding number; left as signed.)
-        if (shells > 1 && walls_.empty()) orient_shells(surfaces_, X_, sign, shell, shells);
+        if (shells > 1 && walls_.empty() && wire_edges_.empty())
+            orient_shells(surfaces_, X_, sign, shell, shells);
         Body body;
         for (auto [s, sg] : sign) body.faces.push_back({s, sg});
         find_lids(body);
-        double volume = body_volume(*this, body, X_);
-        if (volume < 0) {
-            volume = -volume;
+        // Oriented by the volume its films and lids enclose; a volconst only shifts it.
+        const double enclosed = body_volume(*this, body, X_);
+        double area = 0;
+        for (const BodyFace& f : body.faces)
+            for (const Tri& t : surfaces_[f.surface].triangles)
+                area += 0.5 * (X_[t[1]] - X_[t[0]]).cross(X_[t[2]] - X_[t[0]]).norm();
+        if (std::abs(enclosed) <= 1e-12 * std::pow(area, 1.5))
+            throw TopologyError("cluster: " + name + " encloses no volume (its films and lids "
+                                "bound " + fmt(enclosed) + ")");
+        if (enclosed < 0) {
             for (BodyFace& f : body.faces) f.sign = -f.sign;
             for (Lid& lid : body.lids)
                 for (auto& e : lid.edges) std::swap(e[0], e[1]);
         }
+        if (!volconst.empty() && volconst[b]) {
+            body.volconst = volconst[b];
+            for (Lid& lid : body.lids) lid.evolver_content = lid.walls.empty();
+        }
+        initial_volumes_.push_back(body_volume(*this, body, X_));
         bodies_.push_back(std::move(body));
-        initial_volumes_.push_back(std::abs(volume));
     }
 }
 

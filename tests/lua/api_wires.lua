@@ -123,9 +123,54 @@ T.check_error("is a free boundary edge (in one facet only) and no wall is attach
 local w = froth.cluster((tube(24, 8, z0)))
 T.check_error("unfix: vertex 1 ends the free boundary edge", w.unfix, w, {1})
 T.assert_equal(#w:fixed(), 48, "a refused unfix changes nothing")
-local body = tube(24, 8, z0)
+
+-- A body whose films end on wires (Evolver's catbody.fe). Without volconst its volume is what
+-- the band and flat lids over the rings enclose; the divergence theorem with the field (x, 0, 0),
+-- which the horizontal lids do not feel, gives it from the band alone. With volconst it is
+-- Evolver's: z dx dy over the band plus the constant. Each sum is over the band's facets
+-- (mean coordinate times the area vector's component), oriented out of the body.
+local function band_integrals(c)
+  local X, sx, sz = T.positions(c), 0, 0
+  for _, f in ipairs(c:facets()) do
+    local a, b, d = X[f.vertices[1]], X[f.vertices[2]], X[f.vertices[3]]
+    local u, w = {b[1] - a[1], b[2] - a[2], b[3] - a[3]}, {d[1] - a[1], d[2] - a[2], d[3] - a[3]}
+    local n = {0.5 * (u[2] * w[3] - u[3] * w[2]), 0.5 * (u[3] * w[1] - u[1] * w[3]), 0.5 * (u[1] * w[2] - u[2] * w[1])}
+    sx = sx + (a[1] + b[1] + d[1]) / 3 * n[1]
+    sz = sz + (a[3] + b[3] + d[3]) / 3 * n[3]
+  end
+  local sign = sx < 0 and -1 or 1 -- the body's orientation of the surface
+  return sign * sx, sign * sz
+end
+local body = tube(24, 8, z0, 0.1)
 body.bodies = {{1}}
-T.check_error("a wire (fixed vertices) does not close a body", froth.cluster, body)
+local closed = froth.cluster(body)
+local enclosed = band_integrals(closed)
+T.assert_near(closed:volumes()[1], enclosed, 1e-12, "wire lids: the volume the band and the flat lids enclose")
+body.bodies = {{1, volconst = 2 * math.pi * z0}}
+local ev = froth.cluster(body)
+local _, z_content = band_integrals(ev)
+T.assert_near(ev:volumes()[1], z_content + 2 * math.pi * z0, 1e-12, "volconst: Evolver's z dx dy over the band plus volconst")
+T.assert_true(math.abs(ev:volumes()[1] - closed:volumes()[1]) > 1e-3, "volconst: not the enclosed volume")
+ev:refine()
+_, z_content = band_integrals(ev)
+T.assert_near(ev:volumes()[1], z_content + 2 * math.pi * z0, 1e-12, "volconst: Evolver's volume after refine")
+ev:set_volume(1, 1.5)
+local r = ev:minimize{max_iterations = 200}
+T.assert_near(ev:volumes()[1], 1.5, 1e-12, "volconst: minimize holds Evolver's volume")
+local file = os.tmpname() .. ".froth"
+ev:save(file)
+local back = froth.load(file)
+os.remove(file)
+T.assert_equal(back:volumes()[1], ev:volumes()[1], "volconst: save and load keep the body's convention")
+-- Below the stable catenoid's volume (about 2.6 here) the film bows in: negative pressure.
+T.assert_true(ev:pressures()[1] < 0, "volconst: the pressure below the catenoid's volume is negative", ev:pressures()[1])
+body.bodies = {{1, volconst = "x"}}
+T.check_error("cluster: bodies[1].volconst must be a number, got string", froth.cluster, body)
+body.bodies = {{1, volconst = math.huge}}
+T.check_error("cluster: body 1: volconst must be a finite number, got inf", froth.cluster, body)
+-- A body whose film lies in its own lid encloses nothing.
+T.check_error("cluster: body 1 encloses no volume", froth.cluster,
+              {vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, surfaces = {{{1, 2, 3}}}, bodies = {{1}}, fixed = {1, 2, 3}})
 
 -- Wire curves: the rings given as curves keep refined midpoints on the circles, so the refined
 -- film converges to the catenoid between the circles (without curves it keeps the 8-gons).
