@@ -284,33 +284,23 @@ ClusterState parse_body(io::Tokens& t, long long version) {
 
 ClusterState capture_state(const Cluster& c, std::vector<NamedValues> history) {
     ClusterState s;
-    s.spec.vertices = c.positions();
-    for (const Surface& surface : c.surfaces()) {
-        s.spec.surfaces.push_back({surface.triangles, surface.sigma});
+    s.spec = cluster_spec(c);
+    s.spec.walls.clear(); // saved by their parameters, user walls and curves by name
+    s.spec.curves.clear();
+    for (const Surface& surface : c.surfaces())
         s.materials.push_back(material_of(surface));
-    }
-    for (const Body& b : c.bodies()) {
-        std::vector<int> faces;
-        for (const BodyFace& f : b.faces)
-            faces.push_back(f.surface);
-        s.spec.bodies.push_back(std::move(faces));
-        s.spec.volconst.push_back(b.volconst);
-    }
     for (const WallPtr& w : c.walls()) {
         s.walls.push_back(w->parameters());
         if (s.walls.back().name.find_first_of("\r\n") != std::string::npos)
             throw InvalidInput("save: the wall '" + s.walls.back().name +
                                "' has a line break in its name; give it a one-line name");
     }
-    s.spec.attachments = c.wall_attachments();
-    s.spec.fixed = c.fixed_vertices();
     for (const CurvePtr& curve : c.curves()) {
         s.curve_names.push_back(curve->name());
         if (curve->name().find_first_of("\r\n") != std::string::npos)
             throw InvalidInput("save: the curve '" + curve->name() +
                                "' has a line break in its name; give it a one-line name");
     }
-    s.spec.curve_points = c.curve_points();
     s.time = c.time();
     s.initial_area = c.initial_area();
     s.initial_volumes = c.initial_volumes();

@@ -17,7 +17,9 @@ namespace {
 
 using EdgeKey = std::pair<int, int>;
 
-EdgeKey key(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+EdgeKey key(int a, int b) {
+    return {std::min(a, b), std::max(a, b)};
+}
 
 double angle_at(const Vec3& p, const Vec3& a, const Vec3& b) {
     const Vec3 u = a - p, w = b - p;
@@ -49,7 +51,9 @@ struct Flipper {
         const auto& X = c.positions();
         if (angle_at(X[p], X[a], X[b]) + angle_at(X[q], X[b], X[a]) <= std::numbers::pi + 1e-12)
             return false;
-        const auto normal = [&](int i, int j, int k) { return Vec3((X[j] - X[i]).cross(X[k] - X[i])); };
+        const auto normal = [&](int i, int j, int k) {
+            return Vec3((X[j] - X[i]).cross(X[k] - X[i]));
+        };
         const Vec3 before = normal(a, b, p) + normal(b, a, q);
         const Vec3 n1 = normal(a, q, p), n2 = normal(b, p, q);
         const double scale = before.norm();
@@ -72,7 +76,8 @@ struct Flipper {
                 for (int k = 0; k < 3; ++k)
                     sides[key(tris[s][i][k], tris[s][i][(k + 1) % 3])].push_back({s, i, k});
         std::vector<std::vector<char>> touched(tris.size());
-        for (std::size_t s = 0; s < tris.size(); ++s) touched[s].assign(tris[s].size(), 0);
+        for (std::size_t s = 0; s < tris.size(); ++s)
+            touched[s].assign(tris[s].size(), 0);
         int flips = 0;
         for (const auto& [edge, list] : sides) {
             // Interior to one film: two sides of one surface and no other surface (a triple
@@ -96,7 +101,8 @@ EquiangulateResult equiangulate(const Cluster& c, int max_sweeps) {
     for (const Surface& s : c.surfaces()) {
         f.tris.push_back(s.triangles);
         for (const Tri& t : s.triangles)
-            for (int k = 0; k < 3; ++k) f.edges.insert(key(t[k], t[(k + 1) % 3]));
+            for (int k = 0; k < 3; ++k)
+                f.edges.insert(key(t[k], t[(k + 1) % 3]));
     }
     EquiangulateResult r{c, 0, 0};
     for (; r.sweeps < max_sweeps; ++r.sweeps) {

@@ -239,4 +239,15 @@ T.check_error("cannot open", froth.load, path .. "_missing.froth")
 T.check_error("option 'walls' must be a table", froth.load, path .. "_missing.froth", {walls = 1})
 T.check_error("unknown option", froth.load, path .. "_missing.froth", {wall = {}})
 
+-- Format 1 files (before volconst) still load; a format 2 file keeps a body's volconst.
+local data = (debug.getinfo(1, "S").source:sub(2):match("^(.*)/") or ".") .. "/../data/state/"
+local v1 = froth.load(data .. "box_anisotropic_fixed.froth")
+T.assert_true(v1:info().vertices > 0, "a format 1 file loads")
+local v2 = io.open(data .. "ring_body_volconst.froth"):read("a")
+T.assert_true(v2:find("^froth%-state 2\n") ~= nil, "the volconst seed is format 2")
+local ring = froth.load(data .. "ring_body_volconst.froth", {curves = {
+  ["boundary 1"] = function(p) return math.cos(p), math.sin(p), 0.6 end,
+  ["boundary 2"] = function(p) return math.cos(p), math.sin(p), -0.6 end}})
+-- Evolver's volume of the vertical band between the hexagons: volconst alone, 2 pi R^2 H.
+T.assert_near(ring:volumes()[1], 2 * math.pi * 0.6, 1e-15, "format 2: the body keeps Evolver's volume convention")
 T.summary()
