@@ -121,9 +121,12 @@ std::string state_text(const ClusterState& s) {
     // Format 2: the bodies with Evolver's volconst, as (body id, constant) pairs.
     const auto has_volconst = [](const std::optional<double>& v) { return v.has_value(); };
     out << "volconst "
-        << static_cast<int>(std::count_if(s.spec.volconst.begin(), s.spec.volconst.end(), has_volconst)) << '\n';
+        << static_cast<int>(
+               std::count_if(s.spec.volconst.begin(), s.spec.volconst.end(), has_volconst))
+        << '\n';
     for (std::size_t b = 0; b < s.spec.volconst.size(); ++b)
-        if (s.spec.volconst[b]) out << static_cast<int>(b + 1) << ' ' << *s.spec.volconst[b] << '\n';
+        if (s.spec.volconst[b])
+            out << static_cast<int>(b + 1) << ' ' << *s.spec.volconst[b] << '\n';
     out << "history " << static_cast<int>(s.history.size()) << '\n';
     for (const NamedValues& a : s.history) {
         out << "array " << a.name << ' ' << static_cast<int>(a.values.size()) << '\n';

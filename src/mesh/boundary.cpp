@@ -185,11 +185,13 @@ double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) 
         }
     // On one wall its own flux (curved walls count the lid's bulge); across walls and on wires
     // flat fans, each triangle (apex, b, a).
+    // Evolver's convention takes any closing fan out again (its cones less its z dx dy): the
+    // flat one, whatever the walls.
     double flux = 0, z_content = 0;
     for (const auto& e : lid.edges) {
         const Vec3 &a = X[e[0]], &b = X[e[1]];
-        flux += lid.walls.size() == 1 ? c.walls()[lid.walls[0]]->fan_flux(apex, a, b)
-                                      : 0.5 * apex.dot(b.cross(a));
+        const bool flat = lid.walls.size() != 1 || lid.evolver_content;
+        flux += flat ? 0.5 * apex.dot(b.cross(a)) : c.walls()[lid.walls[0]]->fan_flux(apex, a, b);
         if (lid.evolver_content) // z is linear on the triangle: its mean times the z-area
             z_content += (apex[2] + a[2] + b[2]) / 3 * 0.5 * (b - apex).cross(a - apex)[2];
     }

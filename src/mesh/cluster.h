@@ -37,9 +37,10 @@ struct ClusterSpec {
     std::vector<std::vector<int>> bodies;
     /// Evolver's `volconst` per body (empty, or one entry per body; nullopt: none). A body with
     /// one has Evolver's volume: the integral of z dx dy over its facets plus the constant, so
-    /// the loops where its films end on wires stay open (mesh/boundary.cpp, lid_volume) and an
-    /// Evolver datafile's `volume` target means the same number. Without it such a loop is
-    /// closed by a flat lid and the volume is the one the films and lids enclose.
+    /// its lids on wires and walls count nothing (mesh/boundary.cpp, lid_volume; Evolver's
+    /// content integrals, which froth does not read, would add to it) and an Evolver
+    /// datafile's `volume` target means the same number. Without it the volume is the one the
+    /// films and lids enclose.
     std::vector<std::optional<double>> volconst;
     /// External boundaries (seed (1.25)): every free boundary edge (an edge of one facet only)
     /// must lie on one of them, or be a wire (below); its vertices are then constrained to the
@@ -91,9 +92,9 @@ struct BodyFace {
 struct Lid {
     std::vector<std::array<int, 2>> edges;
     std::vector<int> walls; ///< the walls its edges lie on; empty for a loop of wires
-    /// A wire loop of a body with volconst: Evolver's convention, under which the lid adds the
-    /// fan's cone volume less its integral of z dx dy (what turns the cone sum of the films and
-    /// the fan into the z dx dy sum over the films alone).
+    /// A lid of a body with volconst: Evolver's convention (no content integrals), under which
+    /// the lid adds its flat fan's cone volume less the fan's integral of z dx dy, what turns
+    /// the cone sum of the films and the fan into the z dx dy sum over the films alone.
     bool evolver_content = false;
 };
 
@@ -319,7 +320,7 @@ std::vector<int> drop_wall_lids(ClusterSpec& spec);
 /// triangle lies in the plane of its edge). On one curved wall each fan triangle counts the
 /// flux of the wall patch it spans (Wall::fan_flux: exact for spheres and cylinders up to O(h^2),
 /// the flat triangle for user walls, which leaves out the lid's bulge). A wire loop's fan is
-/// flat; with Lid::evolver_content it adds its cones less its integral of z dx dy.
+/// flat; with Lid::evolver_content every fan is flat and adds its cones less its z dx dy.
 double lid_volume(const Cluster& c, const Lid& lid);
 /// The same at positions X (one per vertex of c) instead of the cluster's own.
 double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X);

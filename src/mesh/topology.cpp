@@ -260,7 +260,7 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces,
         }
         if (!volconst.empty() && volconst[b]) {
             body.volconst = volconst[b];
-            for (Lid& lid : body.lids) lid.evolver_content = lid.walls.empty();
+            for (Lid& lid : body.lids) lid.evolver_content = true;
         }
         initial_volumes_.push_back(body_volume(*this, body, X_));
         bodies_.push_back(std::move(body));

@@ -164,6 +164,21 @@ os.remove(file)
 T.assert_equal(back:volumes()[1], ev:volumes()[1], "volconst: save and load keep the body's convention")
 -- Below the stable catenoid's volume (about 2.6 here) the film bows in: negative pressure.
 T.assert_true(ev:pressures()[1] < 0, "volconst: the pressure below the catenoid's volume is negative", ev:pressures()[1])
+-- On a wall the same: a pyramid on the plane z = 0.3 (its lid faces down). The x field does not
+-- see the flat lid, so the band integral is the enclosed volume; with volconst the lid counts
+-- nothing and the volume is z dx dy over the films plus the constant (Evolver without content).
+local function pyramid(volconst)
+  return {vertices = {{-1, -1, 0.3}, {1, -1, 0.3}, {1, 1, 0.3}, {-1, 1, 0.3}, {0.1, 0.2, 1.3}},
+          surfaces = {{{1, 2, 5}, {2, 3, 5}, {3, 4, 5}, {4, 1, 5}}},
+          bodies = {{1, volconst = volconst}}, walls = froth.plane{normal = {0, 0, 1}, offset = 0.3}}
+end
+local tent = froth.cluster(pyramid())
+T.assert_near(tent:volumes()[1], 4 / 3, 1e-14, "a pyramid on a plane: base 4 times height 1 over 3")
+T.assert_near(tent:volumes()[1], (band_integrals(tent)), 1e-14, "the x-field integral over its films")
+local ev_tent = froth.cluster(pyramid(0.25))
+_, z_content = band_integrals(ev_tent)
+T.assert_near(ev_tent:volumes()[1], z_content + 0.25, 1e-14, "volconst on a wall: z dx dy over the films plus volconst")
+T.assert_near(ev_tent:volumes()[1], 4 / 3 + 0.3 * 4 + 0.25, 1e-14, "volconst on a wall: the enclosed volume plus the lid's 0.3 * 4")
 body.bodies = {{1, volconst = "x"}}
 T.check_error("cluster: bodies[1].volconst must be a number, got string", froth.cluster, body)
 body.bodies = {{1, volconst = math.huge}}
