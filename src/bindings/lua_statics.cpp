@@ -146,9 +146,10 @@ int l_equiangulate(lua_State* L) {
     ChangeGuard changing(L, h, "equiangulate");
     return guarded(L, [&] {
         EquiangulateResult r = equiangulate(h.cluster, static_cast<int>(max_sweeps));
-        const double change = r.flips ? volume_change(h.cluster, r.cluster) : 0.0;
-        if (r.flips) {
-            h.cluster = std::move(r.cluster);
+        double change = 0;
+        if (r.cluster) {
+            change = volume_change(h.cluster, *r.cluster);
+            h.cluster = std::move(*r.cluster);
             h.stepper.reset();
         }
         lua_createtable(L, 0, 3);

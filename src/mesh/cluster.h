@@ -295,17 +295,17 @@ void carry_over(const Cluster& from, Cluster& to);
 Cluster refine(const Cluster& c);
 
 struct EquiangulateResult {
-    Cluster cluster;
-    int flips = 0;  ///< edges flipped
-    int sweeps = 0; ///< passes over the edges that flipped something
+    std::optional<Cluster> cluster; ///< the flipped cluster; empty when nothing flipped
+    int flips = 0;                  ///< edges flipped
+    int sweeps = 0;                 ///< passes over the edges that flipped something
 };
 /// Evolver's `u`: flips interior edges of the films until each is locally Delaunay (the angles
 /// opposite an edge add up to at most pi), at most max_sweeps passes. Only edges inside one
 /// surface flip (never a triple line, wall or wire edge), never into an edge that exists, a
 /// degenerate or folded facet, or among four fixed corners. Vertices do not move; volumes change
-/// by what the flipped edges' tetrahedra hold (minimize restores the targets). The vertices,
-/// everything refine carries over, and the cluster itself when nothing flips, are kept.
-/// 	hrow InvalidInput for max_sweeps < 1; what the Cluster constructor throws.
+/// by what the flipped edges' tetrahedra hold (minimize restores the targets). The vertices
+/// and everything refine carries over are kept.
+/// \throw InvalidInput for max_sweeps < 1; what the Cluster constructor throws.
 EquiangulateResult equiangulate(const Cluster& c, int max_sweeps = 100);
 
 /// Removes from spec the facets with all three corners on one of spec.walls (within 1e-6 of

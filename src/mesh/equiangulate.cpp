@@ -104,7 +104,7 @@ EquiangulateResult equiangulate(const Cluster& c, int max_sweeps) {
             for (int k = 0; k < 3; ++k)
                 f.edges.insert(key(t[k], t[(k + 1) % 3]));
     }
-    EquiangulateResult r{c, 0, 0};
+    EquiangulateResult r;
     for (; r.sweeps < max_sweeps; ++r.sweeps) {
         const int flips = f.sweep();
         if (flips == 0) break;
