@@ -15,7 +15,7 @@
 -- of exactly two faces (a film between triple lines), each oriented consistently; bodies are
 -- closed by films, walls and wires (an edge between two fixed vertices on a film's border is a
 -- wire); a body's `volconst` selects Evolver's volume (z dx dy over its facets plus the
--- constant, wire loops left open), so its `volume` target means what it means to Evolver.
+-- constant, its lids counting nothing), so its `volume` target means what it means to Evolver.
 -- Anything else (inequality constraints, content integrands, sliding boundary vertices,
 -- quantities, torus models, gravity, ...) is one error naming the keyword and the line, never
 -- a wrong cluster.

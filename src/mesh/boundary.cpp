@@ -184,9 +184,8 @@ double lid_volume(const Cluster& c, const Lid& lid, const std::vector<Vec3>& X) 
             apex = wall.gradient(apex).norm() > 0 ? wall.project(apex) : X[lid.edges.front()[0]];
         }
     // On one wall its own flux (curved walls count the lid's bulge); across walls and on wires
-    // flat fans, each triangle (apex, b, a).
-    // Evolver's convention takes any closing fan out again (its cones less its z dx dy): the
-    // flat one, whatever the walls.
+    // flat fans, each triangle (apex, b, a). Evolver's convention takes the closing fan out
+    // again (its cones less its z dx dy), so there the flat fan serves on any wall.
     double flux = 0, z_content = 0;
     for (const auto& e : lid.edges) {
         const Vec3 &a = X[e[0]], &b = X[e[1]];

@@ -238,7 +238,8 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces,
                 }
             }
         }
-        // (With walls a shell may be open, closed by lids: no winding number; left as signed.)
+        // (With walls or wires a shell may be open, closed by lids: no winding number; left as
+        // signed.)
         if (shells > 1 && walls_.empty() && wire_edges_.empty())
             orient_shells(surfaces_, X_, sign, shell, shells);
         Body body;

@@ -70,15 +70,17 @@ T.assert_near(c:area(), area, 1e-13, "a flat film keeps its area")
 T.assert_equal(c:info().facets, 128, "as many facets as before")
 T.assert_true(worst_angle_sum(c) <= math.pi + 1e-9, "every interior edge is locally Delaunay", worst_angle_sum(c))
 T.assert_equal(c:equiangulate().flips, 0, "a second pass flips nothing")
-T.assert_equal(c:equiangulate{max_sweeps = 1}.volume_change, 0, "no volume change without flips")
 
 -- A double bubble: its triple line and bodies are kept, volumes change a little.
 if froth.has("gmsh") then
   local db = froth.double_bubble{h = 0.25}
   local line = #db:edges{where = function(e) return e.triple_line end}
-  local before = db:info()
+  local before, v0 = db:info(), db:volumes()
   local u = db:equiangulate()
-  local after = db:info()
+  local after, v1 = db:info(), db:volumes()
+  local change = math.max(math.abs(v1[1] - v0[1]) / v0[1], math.abs(v1[2] - v0[2]) / v0[2])
+  T.assert_true(u.flips > 0, "double bubble: edges flipped", u.flips)
+  T.assert_near(u.volume_change, change, 1e-15, "double bubble: volume_change is the largest relative change")
   T.assert_equal(#db:edges{where = function(e) return e.triple_line end}, line, "double bubble: the triple line keeps its edges")
   T.assert_equal(after.triple_lines, before.triple_lines, "double bubble: triple lines kept")
   T.assert_equal(after.bodies, 2, "double bubble: two bodies")
