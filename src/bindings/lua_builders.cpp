@@ -9,6 +9,8 @@
 #include "core/errors.h"
 #include "io/msh_reader.h"
 #include "io/text_file.h"
+#include "core/format.h"
+#include "wulff/sphere_sampling.h"
 #include "bindings/luax.h"
 
 #ifdef FROTH_HAVE_GMSH
@@ -16,6 +18,7 @@
 #endif
 
 #include <climits>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -288,9 +291,26 @@ int l_sphere(lua_State* L) {
         luaL_error(L, "sphere: center must be {x, y, z}");
     }
     lua_pop(L, 1);
+    if (o.has("levels") && o.has("h")) o.error("levels", "and option 'h' exclude each other");
+    const long long levels = o.integer("levels", -1);
+    if (o.has("levels") && (levels < 0 || levels > kMaxSubdivisions))
+        o.error("levels", ("must be in 0.." + std::to_string(kMaxSubdivisions)).c_str());
     o.finish();
     return guarded(L, [&] {
-        push_cluster(L, gmsh_builders().sphere(s));
+        if (levels < 0) {
+            push_cluster(L, gmsh_builders().sphere(s));
+            return 1;
+        }
+        // The icosphere: symmetric, every vertex on the sphere, and no gmsh.
+        if (!(std::isfinite(s.R) && s.R > 0))
+            throw InvalidInput("sphere: R must be positive, got " + fmt(s.R));
+        if (!s.center.allFinite()) throw InvalidInput("sphere: center must be finite");
+        TriangleSurface ico = icosphere(static_cast<int>(levels));
+        ClusterSpec spec;
+        for (const Vec3& x : ico.vertices) spec.vertices.push_back(s.center + s.R * x);
+        spec.surfaces.push_back({std::move(ico.triangles), 1.0});
+        spec.bodies = {{0}};
+        push_cluster(L, std::move(spec));
         return 1;
     });
 }

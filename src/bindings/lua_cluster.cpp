@@ -294,11 +294,14 @@ int l_step(lua_State* L) {
     const double tau = o.number("tau");
     const bool project = o.boolean("project", false);
     const bool exact = o.boolean("exact_volumes", true);
+    const long long order = o.integer("order", 1);
+    if (order != 1 && order != 2) o.error("order", "must be 1 or 2");
     const FixedPointOptions fp = read_fixed_point(L, o, "step: fixed_point");
     o.finish();
     return guarded(L, [&] {
         h.stepper.set_fixed_point(fp);
         h.stepper.set_exact_volumes(exact);
+        h.stepper.set_order(static_cast<int>(order));
         const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau, project);
         push_step_report(L, r);
         return 1;
@@ -354,6 +357,9 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     lua_pop(L, 1);
     e.project_onto_walls = o.boolean("project", false);
     e.exact_volumes = o.boolean("exact_volumes", true);
+    const long long order = o.integer("order", 1);
+    if (order != 1 && order != 2) o.error("order", "must be 1 or 2");
+    e.order = static_cast<int>(order);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
     e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;
     if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))
@@ -525,6 +531,7 @@ void push_step_report(lua_State* L, const StepReport& r) {
     set_integer(L, "fixed_point_iterations", r.fixed_point_iterations);
     set_number(L, "fixed_point_change", r.fixed_point_change);
     set_integer(L, "substeps", r.substeps);
+    set_integer(L, "order", r.order);
     set_integer(L, "volume_iterations", r.volume_iterations);
     if (r.volume_iterations > 0) set_number(L, "volume_error", r.volume_error);
 }

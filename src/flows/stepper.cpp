@@ -27,19 +27,29 @@ TimeStepper::TimeStepper() = default;
 TimeStepper::~TimeStepper() = default;
 
 TimeStepper::TimeStepper(const TimeStepper& o)
-    : fixed_point_(o.fixed_point_), exact_volumes_(o.exact_volumes_),
-      mcf_(o.mcf_ ? std::make_unique<MeanCurvatureScheme>(*o.mcf_) : nullptr),
+    : fixed_point_(o.fixed_point_), exact_volumes_(o.exact_volumes_), order_(o.order_),
+      previous_(o.previous_), mcf_(o.mcf_ ? std::make_unique<MeanCurvatureScheme>(*o.mcf_) : nullptr),
       sd_(o.sd_ ? std::make_unique<SurfaceDiffusionScheme>(*o.sd_) : nullptr) {}
 
 void TimeStepper::reset() {
     if (mcf_) mcf_->reset();
     if (sd_) sd_->reset();
+    previous_ = Previous();
 }
 
 std::vector<NamedValues> TimeStepper::history() const {
     std::vector<NamedValues> h;
     if (mcf_) mcf_->save_history(h);
     if (sd_) sd_->save_history(h);
+    if (!previous_.end.empty()) { // saved with the cluster in the state it ended in
+        std::vector<double> start;
+        start.reserve(3 * previous_.start.size());
+        for (const Vec3& x : previous_.start)
+            start.insert(start.end(), {x[0], x[1], x[2]});
+        h.push_back({"bdf2.start", std::move(start)});
+        h.push_back({"bdf2.tau", {previous_.tau}});
+        h.push_back({"bdf2.flow", {previous_.flow == Flow::MeanCurvature ? 0.0 : 1.0}});
+    }
     return h;
 }
 
@@ -47,6 +57,37 @@ void TimeStepper::restore_history(const Cluster& c, const std::vector<NamedValue
     reset();
     scheme(Flow::MeanCurvature).restore_history(c, history);
     scheme(Flow::SurfaceDiffusion).restore_history(c, history);
+    const auto find = [&](const char* name) -> const std::vector<double>* {
+        for (const NamedValues& a : history)
+            if (a.name == name) return &a.values;
+        return nullptr;
+    };
+    const std::vector<double>*start = find("bdf2.start"), *tau = find("bdf2.tau"),
+                           *flow = find("bdf2.flow");
+    if (!start && !tau && !flow) return;
+    if (!start || !tau || !flow || tau->size() != 1 || !(tau->front() > 0) ||
+        flow->size() != 1 || (flow->front() != 0 && flow->front() != 1) ||
+        start->size() != 3 * static_cast<std::size_t>(c.n_vertices()))
+        throw InvalidInput("order-2 history: bdf2.start, bdf2.tau and bdf2.flow must come "
+                           "together, with 3 numbers per vertex, one tau > 0 and a flow 0 or 1");
+    previous_.start.resize(c.n_vertices());
+    for (int v = 0; v < c.n_vertices(); ++v)
+        previous_.start[v] = Vec3((*start)[3 * v], (*start)[3 * v + 1], (*start)[3 * v + 2]);
+    previous_.end = c.positions();
+    previous_.tau = tau->front();
+    previous_.flow = flow->front() == 0 ? Flow::MeanCurvature : Flow::SurfaceDiffusion;
+    previous_.revision = c.materials_revision();
+}
+
+void TimeStepper::set_order(int order) {
+    if (order != 1 && order != 2)
+        throw InvalidInput("step: order must be 1 or 2, got " + std::to_string(order));
+    order_ = order;
+}
+
+bool TimeStepper::continues_previous(const Cluster& c, Flow flow) const {
+    return order_ == 2 && !previous_.end.empty() && previous_.flow == flow &&
+           previous_.revision == c.materials_revision() && previous_.end == c.positions();
 }
 
 void TimeStepper::drop_factorizations() {
@@ -82,11 +123,13 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau, bool project_ont
     if (!scheme(flow).iterative(c)) return step_once(c, flow, tau, project_onto_walls);
     const std::vector<Vec3> X = c.positions();
     const double t = c.time();
+    Previous previous = previous_;
     try {
         return step_halving(c, flow, tau, project_onto_walls, fixed_point_.max_halvings);
     } catch (const Error&) { // the first half may have been taken
         c.set_positions(X);
         c.set_time(t);
+        previous_ = std::move(previous);
         throw;
     }
 }
@@ -131,8 +174,11 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
     const PositionBasis P(c);
     Scheme& chosen = scheme(flow);
     // Every vertex fixed: nothing moves (and SD's kappa block alone is singular on constants).
-    const Eigen::VectorXd z =
-        P.size() == 0 ? Eigen::VectorXd(0) : chosen.solve(c, tau, P, fixed_point_, report);
+    Eigen::VectorXd z(0);
+    if (P.size() > 0 && continues_previous(c, flow))
+        z = chosen.solve_bdf2(c, make_bdf2_step(c, previous_.start, tau, previous_.tau), P, report);
+    else if (P.size() > 0)
+        z = chosen.solve(c, tau, P, fixed_point_, report);
     std::vector<Vec3> X = displaced(c, P, z);
     if (project_onto_walls) project_onto_walls_of(c, X);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)
@@ -160,6 +206,8 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
         const std::vector<double> initial = c.initial_volumes();
         c.set_volume_references(initial, report.volumes);
     }
+    if (order_ == 2)
+        previous_ = {std::move(X_before), c.positions(), tau, flow, c.materials_revision()};
     return report;
 }
 

@@ -72,6 +72,13 @@ class TimeStepper {
     /// it runs the seed's linear scheme (3.6)/(3.8), which loses O(tau^2) of volume per step.
     void set_exact_volumes(bool exact) { exact_volumes_ = exact; }
     bool exact_volumes() const { return exact_volumes_; }
+    /// The order in time of the steps: 1 (the seed's schemes) or 2 (BDF2, schemes/bdf2.h).
+    /// An order-2 step needs the previous step: the stepper keeps its start while it steps
+    /// with order 2, and the first step after any other change of the cluster (a new mesh,
+    /// moved or fixed vertices, other materials, another flow) is of order 1.
+    /// \throw InvalidInput for another order.
+    void set_order(int order);
+    int order() const { return order_; }
 
   private:
     StepReport step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls);
@@ -79,8 +86,20 @@ class TimeStepper {
     /// The scheme of a flow, made on first use.
     Scheme& scheme(Flow flow);
     static void check_no_body_vanishes(const Cluster& c, const std::vector<Vec3>& X, double tau);
+    /// The order-2 step's history: the last step's start X^{m-1}, its length and flow, and the
+    /// state it ended in (positions X^m and the cluster's materials revision); valid only while
+    /// the cluster is still in that state.
+    struct Previous {
+        std::vector<Vec3> start, end;
+        double tau = 0;
+        Flow flow = Flow::MeanCurvature;
+        int revision = -1;
+    };
+    bool continues_previous(const Cluster& c, Flow flow) const;
     FixedPointOptions fixed_point_;
     bool exact_volumes_ = true;
+    int order_ = 1;
+    Previous previous_;
     std::unique_ptr<MeanCurvatureScheme> mcf_;
     std::unique_ptr<SurfaceDiffusionScheme> sd_;
 };

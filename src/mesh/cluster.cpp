@@ -90,7 +90,7 @@ void Cluster::set_fixed(const std::vector<int>& vertices, bool fixed) {
                                        "(a wire); it stays fixed");
     for (int v : vertices) fixed_[v] = fixed;
     n_fixed_ = static_cast<int>(std::count(fixed_.begin(), fixed_.end(), 1));
-    ++assembly_revision_;
+    ++assembly_revision_, ++materials_revision_;
 }
 
 void Cluster::set_target_volume(int body, double volume) {
@@ -224,6 +224,7 @@ void Cluster::set_sigma(int surface, double sigma) {
         surfaces_[surface].sigma = old; // nothing half-changed
         throw;
     }
+    ++materials_revision_;
 }
 
 // Young's law at a triple line, sigma_1 nu_1 + sigma_2 nu_2 + sigma_3 nu_3 = 0 (seed (1.8)),
@@ -248,13 +249,14 @@ void Cluster::set_anisotropy(int surface, std::shared_ptr<const Anisotropy> gamm
     if (surface < 0 || surface >= n_surfaces())
         throw InvalidInput("set_anisotropy: there is no surface " + std::to_string(surface + 1));
     surfaces_[surface].gamma = std::move(gamma);
-    ++assembly_revision_;
+    ++assembly_revision_, ++materials_revision_;
 }
 
 void Cluster::set_mobility(int surface, Mobility beta) {
     if (surface < 0 || surface >= n_surfaces())
         throw InvalidInput("set_mobility: there is no surface " + std::to_string(surface + 1));
     surfaces_[surface].beta = std::move(beta);
+    ++materials_revision_;
 }
 
 bool Cluster::anisotropic() const {

@@ -162,6 +162,9 @@ class Cluster {
     /// Changes whenever the sparsity of the position block may change (set_anisotropy): the
     /// time stepper rebuilds its patterns when it sees a new value.
     int assembly_revision() const { return assembly_revision_; }
+    /// Changes whenever anything of a step's system besides the positions changes (sigma,
+    /// gamma, beta, fixed vertices): an order-2 step's history is void then.
+    int materials_revision() const { return materials_revision_; }
 
     const std::vector<Body>& bodies() const { return bodies_; }
     const std::vector<JunctionEdge>& junction_edges() const { return junction_edges_; }
@@ -273,6 +276,7 @@ class Cluster {
     int n_facets_ = 0;
     double time_ = 0.0;
     int assembly_revision_ = 0;
+    int materials_revision_ = 0;
 };
 
 /// The spec that rebuilds c: positions, surfaces (triangles, sigma), bodies and their volconst,

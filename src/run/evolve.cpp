@@ -230,6 +230,7 @@ void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper)
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     check_options(o);
     stepper.set_fixed_point(o.fixed_point); // throws InvalidInput for bad values
+    stepper.set_order(o.order);
     const EngineLoopScope polling; // Ctrl-C is served between steps, also inside on_step
     const auto start = Clock::now();
     Run run(c, stepper, o);

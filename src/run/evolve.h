@@ -47,6 +47,9 @@ struct EvolveOptions {
     /// Surface diffusion holds the bodies at their target volumes exactly (the default;
     /// TimeStepper::set_exact_volumes); false runs the seed's linear scheme.
     bool exact_volumes = true;
+    /// The order in time of the steps, 1 or 2 (TimeStepper::set_order; the first step of
+    /// order 2 is of order 1).
+    int order = 1;
 };
 
 struct EvolveResult {

@@ -10,7 +10,8 @@
 /// A_gamma the stiffness of assembly/stiffness.h (r > 1: weights at nu^{m+1}, (3.9)), m_iv the
 /// lumped masses, omega_iv the area-weighted vertex normals, mb the mobility-weighted masses
 /// (mb = m for beta = 1). Solved by CHOLMOD. Testing with y gives the seed's Theorem 3.2:
-/// E(X^{m+1}) <= E(X^m) for every tau.
+/// E(X^{m+1}) <= E(X^m) for every tau. Order 2 (bdf2.h) adds B~ E / tau' to the right side,
+/// B the block above on the predictor and tau' = tau / a.
 
 #include "schemes/scheme.h"
 
@@ -30,9 +31,7 @@ class MeanCurvatureScheme final : public Scheme {
 
   protected:
     void assemble_system(const Cluster& c, const PairGeometry& g, const PositionBasis& P,
-                         double tau, const FacetNormals* lagged) override {
-        assemble_mcf(c, g, P, tau, lagged, matrix_, rhs_);
-    }
+                         double tau, const FacetNormals* lagged) override;
 };
 
 } // namespace froth

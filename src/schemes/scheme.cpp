@@ -85,6 +85,8 @@ void Scheme::assemble(const Cluster& c, double tau, const PositionBasis& P,
     }
     const PairGeometry own = weights_ ? PairGeometry{} : pair_geometry(c);
     assemble_system(c, weights_ ? *weights_ : own, P, tau, lagged);
+    // Order 2 assembles on the predictor X~ = c.positions(): A~ X^{m+1} = A~ X~ + A~ (dX - shift).
+    if (bdf2_) rhs_.head(P.size()) += P.restrict(apply_stiffness(c, bdf2_->shift, lagged));
     cost.assemble_seconds += seconds_since(t0);
 }
 
@@ -97,6 +99,18 @@ Eigen::VectorXd Scheme::solve_once(const Cluster& c, double tau, const PositionB
 Eigen::VectorXd Scheme::solve(const Cluster& c, double tau, const PositionBasis& P,
                               const FixedPointOptions& fp, StepCost& cost) {
     return c.nonlinear() ? solve_newton(c, tau, P, fp, cost) : solve_once(c, tau, P, nullptr, cost);
+}
+
+Eigen::VectorXd Scheme::solve_bdf2(const Cluster&, const Bdf2Step& s, const PositionBasis& P,
+                                   StepCost& cost) {
+    struct Reset { // the pointer must not outlive this call, whatever it throws
+        Scheme& scheme;
+        ~Reset() { scheme.bdf2_ = nullptr; }
+    } reset{*this};
+    bdf2_ = &s;
+    cost.order = 2;
+    // The predictor's normals are explicit r > 1 weights: no Newton iteration (bdf2.h).
+    return solve_once(s.predictor, s.effective_tau(), P, nullptr, cost);
 }
 
 Eigen::VectorXd Scheme::solve_newton(const Cluster& c, double tau, const PositionBasis& P,

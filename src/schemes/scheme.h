@@ -6,6 +6,8 @@
 ///   mean_curvature.h     (3.5)/(3.7)/(3.10) eliminated to (4.6b), SPD: CHOLMOD
 ///   surface_diffusion.h  (3.6)/(3.8)/(3.11), a symmetric saddle point: UMFPACK; and its
 ///                        volume-exact form (volume_exact_sd.cpp, assembly/exact_volumes.h)
+/// Each has a second-order form (bdf2.h: the same system on a predictor surface, plus two
+/// right-hand sides), taken when the stepper has the previous step's positions.
 /// Shared here: one linear solve of the assembled system (a factorisation reused across steps
 /// as a GMRES preconditioner, solvers/sparse_solvers.h) and, for r > 1 anisotropies, Newton's
 /// method on the nonlinear system of (3.9) (numerics.md "Anisotropic schemes"). The stepper
@@ -13,6 +15,7 @@
 /// update of the cluster and its report.
 
 #include "assembly/stiffness.h"
+#include "schemes/bdf2.h"
 #include "solvers/sparse_solvers.h"
 
 #include <memory>
@@ -42,6 +45,9 @@ struct StepCost {
     /// deviation |V_b - V*_b| / V*_b of a body from its target volume after the step.
     int volume_iterations = 0;
     double volume_error = 0;
+    /// The order in time of the step's scheme: 2 for a BDF2 step (bdf2.h), 1 otherwise
+    /// (also the first step of an order-2 run, which has no history yet).
+    int order = 1;
 };
 
 /// The nonlinear iteration for r > 1 (Newton's method on (3.9), numerics.md "Anisotropic
@@ -71,6 +77,11 @@ class Scheme {
     /// \throw SolverError (singular or non-finite system), ConvergenceError (iterations).
     virtual Eigen::VectorXd solve(const Cluster& c, double tau, const PositionBasis& P,
                                   const FixedPointOptions& fp, StepCost& cost);
+    /// The order-2 step s (bdf2.h) from the cluster c at X^m: one linear solve of the
+    /// first-order system of step s.effective_tau() on s.predictor with the BDF2 right-hand
+    /// sides. \throw SolverError (singular or non-finite system)
+    virtual Eigen::VectorXd solve_bdf2(const Cluster& c, const Bdf2Step& s, const PositionBasis& P,
+                                       StepCost& cost);
     /// Forgets the patterns, factorisations and history (the cluster's mesh was replaced).
     virtual void reset();
     /// Forgets the factorisations and patterns, not the history: the next step factorises
@@ -110,6 +121,9 @@ class Scheme {
     /// Set by a scheme that assembles with other pair weights than the cluster's own (the
     /// volume-exact step's averaged normals); null otherwise.
     const PairGeometry* weights_ = nullptr;
+    /// Set during an order-2 step (solve_bdf2): assemble adds its shift term, and each
+    /// scheme's assemble_system its memory term; null otherwise.
+    const Bdf2Step* bdf2_ = nullptr;
 
   private:
     // r > 1: the weight derivative of Newton's method and the (unsymmetric) Jacobian's solver.

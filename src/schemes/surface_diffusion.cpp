@@ -54,6 +54,12 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve(const Cluster& c, double tau, cons
                             : Scheme::solve(c, tau, P, fp, cost);
 }
 
+Eigen::VectorXd SurfaceDiffusionScheme::solve_bdf2(const Cluster& c, const Bdf2Step& s,
+                                                   const PositionBasis& P, StepCost& cost) {
+    return holds_volumes(c) ? solve_bdf2_exact_volumes(c, s, P, cost)
+                            : Scheme::solve_bdf2(c, s, P, cost);
+}
+
 void SurfaceDiffusionScheme::reset() {
     Scheme::reset();
     Z_.reset();
@@ -105,6 +111,13 @@ void SurfaceDiffusionScheme::assemble_system(const Cluster& c, const PairGeometr
     if (!Z_) Z_ = std::make_shared<const KappaBasis>(kappa_basis(c));
     assemble_sd(c, g, *Z_, P, tau, lagged, matrix_, rhs_);
     if (kappa_rhs_) add_kappa_rhs(*Z_, *kappa_rhs_, P.size(), rhs_);
+    if (bdf2_) { // order 2 (bdf2.h): N~^T (a dX - b D) / a = N~^T dX - N~^T E
+        Eigen::VectorXd memory(c.n_pairs());
+        for (int v = 0; v < c.n_vertices(); ++v)
+            for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
+                memory[k] = g.mass[k] * g.omega[k].dot(bdf2_->memory[v]);
+        add_kappa_rhs(*Z_, memory, P.size(), rhs_);
+    }
 }
 
 } // namespace froth

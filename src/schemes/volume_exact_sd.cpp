@@ -8,12 +8,21 @@
 //   sum_{pairs k of body b} chi_bk w_k . dX_v = V_b(X^{m+1}) - V_b(X^m)
 // exactly, and the symmetric structure keeps E(X^{m+1}) <= E(X^m) for every tau. The weights
 // depend on dX: the step is the fixed point dX = S(w(dX)), solved here.
+// Order 2 (schemes/bdf2.h) holds the volumes another way, since the BDF2 derivative mixes two
+// steps' motions: the linear BDF2 step plus the uniform normal velocity per body that the
+// first-order step's kappa rows also carry (volume_rhs), sized so that every body ends at its
+// target: z = z0 + sum_b c_b y_b with y_b the system's response to body b's kappa-row term and
+// c the root of V_b(X^m + T z(c)) = V*_b (cubic in c, found by Newton's method). The linear
+// BDF2 step misses the volumes by O(tau^3), so the correction is O(tau^2) in velocity and the
+// step stays second order; it costs one more back-substitution per body.
 #include "schemes/surface_diffusion.h"
 
 #include "assembly/exact_volumes.h"
 #include "core/errors.h"
 #include "core/format.h"
 #include "solvers/anderson.h"
+
+#include <Eigen/LU>
 
 #include <string>
 
@@ -40,11 +49,15 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, do
     std::vector<Vec3> dX(n, Vec3::Zero());
     Eigen::VectorXd z_last;
     // This step continues the last one (the same positions and unknowns: fixing vertices
-    // changes the unknowns, not the positions).
+    // changes the unknowns, not the positions) with a step of similar length: the velocity
+    // scales with tau only while the motion is smooth in time; a step of 1e-7 is mostly BGN's
+    // tangential relaxation, which scaled up to a step 6000x longer predicts a wild dX whose
+    // weights made the first system singular.
+    const double ratio = tau / last_tau_;
     if (last_end_ == c.positions() && last_z_.size() > 0 && Z_ &&
-        last_z_.size() == P.size() + Z_->n_reduced) {
+        last_z_.size() == P.size() + Z_->n_reduced && ratio >= 0.25 && ratio <= 4) {
         z_last = last_z_;
-        z_last.head(P.size()) *= tau / last_tau_;
+        z_last.head(P.size()) *= ratio;
         for (int v = 0; v < n; ++v)
             dX[v] = P.displacement(z_last, v);
     }
@@ -117,6 +130,47 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, do
         }
         dX = std::move(dz), z_last = std::move(z);
     }
+}
+
+Eigen::VectorXd SurfaceDiffusionScheme::solve_bdf2_exact_volumes(const Cluster& c,
+                                                                 const Bdf2Step& s,
+                                                                 const PositionBasis& P,
+                                                                 StepCost& cost) {
+    const Eigen::VectorXd z0 = Scheme::solve_bdf2(c, s, P, cost);
+    const int nb = c.n_bodies(), n = c.n_vertices();
+    const SparseMatrix& M = matrix_.finish(); // the order-2 system just solved
+    const PairGeometry g = pair_geometry(s.predictor);
+    Eigen::MatrixXd Y(z0.size(), nb), U(3 * n, nb); // responses; their full displacements
+    for (int b = 0; b < nb; ++b) {
+        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(z0.size());
+        add_kappa_rhs(*Z_, volume_rhs(s.predictor, g, Eigen::VectorXd::Unit(nb, b)), P.size(),
+                      rhs);
+        Y.col(b) = solve_checked(solver_, M, rhs, s.tau, cost);
+        for (int v = 0; v < n; ++v)
+            U.block<3, 1>(3 * v, b) = P.displacement(Y.col(b), v);
+    }
+    cost.volume_iterations = 1 + nb;
+    const Eigen::Map<const Eigen::VectorXd> target(c.target_volumes().data(), nb);
+    Eigen::VectorXd coef = Eigen::VectorXd::Zero(nb), z;
+    double last_error = 0;
+    for (int it = 0;; ++it) {
+        z = z0 + Y * coef;
+        const std::vector<Vec3> X = displaced(c, P, z);
+        const std::vector<double> V = body_volumes(c, X);
+        cost.volume_error = max_target_deviation(c, V);
+        // Newton's method on a cubic: done at the tolerance, or once round-off stops it.
+        if (cost.volume_error <= kVolumeTolerance ||
+            (it > 0 && cost.volume_error > 0.5 * last_error) || it == 10)
+            break;
+        last_error = cost.volume_error;
+        const Eigen::MatrixXd J = body_volume_gradients(c, X).transpose() * U;
+        coef -= J.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(V.data(), nb) - target);
+    }
+    if (!(cost.volume_error <= 1e3 * kVolumeTolerance))
+        throw ConvergenceError("step: the order-2 surface diffusion step could not hold the "
+                               "volumes (volume error " + fmt(cost.volume_error) + ", tau = " +
+                               fmt(s.tau) + "); the cluster is unchanged (try a smaller tau)");
+    return z;
 }
 
 } // namespace froth

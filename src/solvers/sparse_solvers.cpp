@@ -6,6 +6,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
 
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -103,8 +104,10 @@ template <class LU> std::string umfpack_failure(const LU& lu, long n) {
                " (degenerate facets or a violated assumption (A) of the seed)";
     if (status != UMFPACK_OK)
         return "UMFPACK failed with status " + std::to_string(static_cast<int>(status)) + size;
+    char rcond[32];
+    std::snprintf(rcond, sizeof rcond, "%.3g", lu.rcond());
     return "the system matrix is nearly singular: UMFPACK's reciprocal condition estimate " +
-           std::to_string(lu.rcond()) + " is below 1e-14" + size +
+           std::string(rcond) + " is below 1e-14" + size +
            " (degenerate facets or a violated assumption (A) of the seed)";
 }
 

@@ -1,0 +1,44 @@
+#pragma once
+/// The second-order form of every scheme (BGN/BDF2, after Jiang, Su and Zhang, arXiv
+/// 2402.03641; numerics.md "Second order in time"). With the step ratio w = tau / tau_prev,
+/// D = X^m - X^{m-1} and the variable-step BDF2 derivative
+///   X_t(t^{m+1}) ~ (a dX - b D) / tau,   a = (1 + 2w) / (1 + w),   b = w^2 / (1 + w)
+/// (w = 1: (3 X^{m+1} - 4 X^m + X^{m-1}) / (2 tau)), the schemes of mean_curvature.h and
+/// surface_diffusion.h keep their form with every geometric quantity (masses, normals, the
+/// stiffness and the r > 1 weights) taken on the predictor Gamma~ = X^m + w D (linear
+/// extrapolation, = 2 X^m - X^{m-1} for w = 1) instead of Gamma^m:
+///   < (a dX - b D) / tau, chi nu~ >^h_mb = < kappa^{m+1}, chi >^h                  (3.7a)
+///   < kappa^{m+1} nu~, eta >^h + < nabla_s^Gt~ X^{m+1}, nabla_s^Gt~ eta >_gamma = 0  (3.7b)
+/// and the same for (3.8a) with its right side -< beta nabla_s kappa, nabla_s chi >. Written
+/// for dX = T y (T the wall bases at X^m), this is the first-order system of step tau / a
+/// assembled on Gamma~, plus two right-hand sides: the stiffness applied to the shift,
+/// A~ (X~ - X^m) in the position rows (A~ X^{m+1} = A~ X~ + A~ (dX - (X~ - X^m))), and the
+/// memory E = (b / a) D in the velocity equation (MCF: B~ E / tau' with B~ the normal block of
+/// (4.6b); SD: N~^T E in the kappa rows). Being linear extrapolation, Gamma~ makes every r > 1
+/// weight explicit: the order-2 step is one linear solve for every anisotropy. The first step
+/// (no history) is the first-order scheme. Order 2 keeps no energy bound for all tau
+/// (BDF2 is A-stable, not the BGN bound's gradient structure); numerics.md has what it keeps.
+
+#include "mesh/cluster.h"
+
+#include <vector>
+
+namespace froth {
+
+/// What an order-2 step adds to a scheme's first-order system.
+struct Bdf2Step {
+    double tau = 0;                ///< the step's length
+    double a = 1, b = 0;           ///< the BDF2 coefficients of the header
+    Cluster predictor;             ///< the cluster at X~ = X^m + w D
+    std::vector<Vec3> shift;       ///< X~ - X^m = w D
+    std::vector<Vec3> memory;      ///< E = (b / a) D
+    /// tau / a: the first-order step whose system the order-2 step solves.
+    double effective_tau() const { return tau / a; }
+};
+
+/// The order-2 step of length tau from c (at X^m) whose previous step, of length
+/// previous_tau, started at `previous` (X^{m-1}). \pre previous has one point per vertex.
+Bdf2Step make_bdf2_step(const Cluster& c, const std::vector<Vec3>& previous, double tau,
+                        double previous_tau);
+
+} // namespace froth
