@@ -176,7 +176,7 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
     // Every vertex fixed: nothing moves (and SD's kappa block alone is singular on constants).
     Eigen::VectorXd z(0);
     if (P.size() > 0 && continues_previous(c, flow))
-        z = chosen.solve_bdf2(c, make_bdf2_step(c, previous_.start, tau, previous_.tau), P, report);
+        z = chosen.solve_bdf2(c, previous_.start, previous_.tau, tau, P, report);
     else if (P.size() > 0)
         z = chosen.solve(c, tau, P, fixed_point_, report);
     std::vector<Vec3> X = displaced(c, P, z);

@@ -5,8 +5,8 @@
 ///   X_t(t^{m+1}) ~ (a dX - b D) / tau,   a = (1 + 2w) / (1 + w),   b = w^2 / (1 + w)
 /// (w = 1: (3 X^{m+1} - 4 X^m + X^{m-1}) / (2 tau)), the schemes of mean_curvature.h and
 /// surface_diffusion.h keep their form with every geometric quantity (masses, normals, the
-/// stiffness and the r > 1 weights) taken on the predictor Gamma~ = X^m + w D (linear
-/// extrapolation, = 2 X^m - X^{m-1} for w = 1) instead of Gamma^m:
+/// stiffness and the r > 1 weights) taken on a predictor Gamma~ of Gamma^{m+1} instead of
+/// Gamma^m:
 ///   < (a dX - b D) / tau, chi nu~ >^h_mb = < kappa^{m+1}, chi >^h                  (3.7a)
 ///   < kappa^{m+1} nu~, eta >^h + < nabla_s^Gt~ X^{m+1}, nabla_s^Gt~ eta >_gamma = 0  (3.7b)
 /// and the same for (3.8a) with its right side -< beta nabla_s kappa, nabla_s chi >. Written
@@ -14,10 +14,18 @@
 /// assembled on Gamma~, plus two right-hand sides: the stiffness applied to the shift,
 /// A~ (X~ - X^m) in the position rows (A~ X^{m+1} = A~ X~ + A~ (dX - (X~ - X^m))), and the
 /// memory E = (b / a) D in the velocity equation (MCF: B~ E / tau' with B~ the normal block of
-/// (4.6b); SD: N~^T E in the kappa rows). Being linear extrapolation, Gamma~ makes every r > 1
-/// weight explicit: the order-2 step is one linear solve for every anisotropy. The first step
-/// (no history) is the first-order scheme. Order 2 keeps no energy bound for all tau
-/// (BDF2 is A-stable, not the BGN bound's gradient structure); numerics.md has what it keeps.
+/// (4.6b); SD: N~^T E in the kappa rows). The predictor is the first-order step itself (its
+/// linear form: (3.5)/(3.6), r > 1 weights at nu^m), whose local error is O(tau^2), so the
+/// geometry is second-order accurate. Jiang, Su and Zhang extrapolate, Gamma~ = 2 X^m -
+/// X^{m-1}; measured here, that is unstable at triple lines: the junctions' in-plane motion
+/// oscillates (BDF2's complex roots for lambda tau ~ 1) and extrapolation amplifies it 3x,
+/// collapsing the facets at the line within 20-60 steps of a double bubble; extrapolating
+/// tangential motion also carries a rotation of a sphere's vertices on forever (a neutral
+/// mode). The implicit predictor damps both as the first-order scheme does, for one more
+/// linear solve per step. The r > 1 weights at the predictor's normals are explicit: an
+/// order-2 step is two linear solves for every anisotropy. The first step (no history) is
+/// the first-order scheme. Order 2 keeps no energy bound for all tau (BDF2 is A-stable, not
+/// the BGN bound's gradient structure); numerics.md has what it keeps.
 
 #include "mesh/cluster.h"
 
@@ -29,16 +37,17 @@ namespace froth {
 struct Bdf2Step {
     double tau = 0;                ///< the step's length
     double a = 1, b = 0;           ///< the BDF2 coefficients of the header
-    Cluster predictor;             ///< the cluster at X~ = X^m + w D
-    std::vector<Vec3> shift;       ///< X~ - X^m = w D
+    Cluster predictor;             ///< the cluster at X~
+    std::vector<Vec3> shift;       ///< X~ - X^m
     std::vector<Vec3> memory;      ///< E = (b / a) D
     /// tau / a: the first-order step whose system the order-2 step solves.
     double effective_tau() const { return tau / a; }
 };
 
-/// The order-2 step of length tau from c (at X^m) whose previous step, of length
-/// previous_tau, started at `previous` (X^{m-1}). \pre previous has one point per vertex.
-Bdf2Step make_bdf2_step(const Cluster& c, const std::vector<Vec3>& previous, double tau,
-                        double previous_tau);
+/// The order-2 step of length tau from c (at X^m) with the predictor X~ = `predicted`, whose
+/// previous step, of length previous_tau, started at `previous` (X^{m-1}).
+/// \pre predicted and previous have one point per vertex.
+Bdf2Step make_bdf2_step(const Cluster& c, std::vector<Vec3> predicted,
+                        const std::vector<Vec3>& previous, double tau, double previous_tau);
 
 } // namespace froth

@@ -69,6 +69,7 @@ double cluster_size(const std::vector<Vec3>& X) {
 void Scheme::drop_systems() {
     matrix_ = SparseBuilder(), weight_jacobian_ = SparseBuilder();
     solver_ = SparseDirectSolver(solver_.kind()), newton_ = SparseDirectSolver(Factorization::LU);
+    corrector_ = SparseDirectSolver(solver_.kind());
 }
 
 void Scheme::reset() {
@@ -101,16 +102,26 @@ Eigen::VectorXd Scheme::solve(const Cluster& c, double tau, const PositionBasis&
     return c.nonlinear() ? solve_newton(c, tau, P, fp, cost) : solve_once(c, tau, P, nullptr, cost);
 }
 
-Eigen::VectorXd Scheme::solve_bdf2(const Cluster&, const Bdf2Step& s, const PositionBasis& P,
+Eigen::VectorXd Scheme::solve_bdf2(const Cluster& c, const std::vector<Vec3>& previous,
+                                   double previous_tau, double tau, const PositionBasis& P,
                                    StepCost& cost) {
+    // The predictor: the linear first-order step (r > 1 weights at nu^m), O(tau^2) from X^{m+1}.
+    const Eigen::VectorXd z0 = solve_once(c, tau, P, nullptr, cost);
+    const Bdf2Step s = make_bdf2_step(c, displaced(c, P, z0), previous, tau, previous_tau);
+    cost.order = 2;
+    return solve_corrector(c, s, P, cost);
+}
+
+Eigen::VectorXd Scheme::solve_corrector(const Cluster&, const Bdf2Step& s, const PositionBasis& P,
+                                        StepCost& cost) {
     struct Reset { // the pointer must not outlive this call, whatever it throws
         Scheme& scheme;
         ~Reset() { scheme.bdf2_ = nullptr; }
     } reset{*this};
     bdf2_ = &s;
-    cost.order = 2;
     // The predictor's normals are explicit r > 1 weights: no Newton iteration (bdf2.h).
-    return solve_once(s.predictor, s.effective_tau(), P, nullptr, cost);
+    assemble(s.predictor, s.effective_tau(), P, nullptr, cost);
+    return solve_checked(corrector_, matrix_.finish(), rhs_, s.tau, cost);
 }
 
 Eigen::VectorXd Scheme::solve_newton(const Cluster& c, double tau, const PositionBasis& P,

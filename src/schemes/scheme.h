@@ -64,7 +64,7 @@ struct FixedPointOptions {
 
 class Scheme {
   public:
-    explicit Scheme(Factorization kind) : solver_(kind) {}
+    explicit Scheme(Factorization kind) : solver_(kind), corrector_(kind) {}
     virtual ~Scheme() = default;
     /// A copy with the same patterns, factorisations and history: it steps bit for bit as this.
     virtual std::unique_ptr<Scheme> clone() const = 0;
@@ -77,11 +77,13 @@ class Scheme {
     /// \throw SolverError (singular or non-finite system), ConvergenceError (iterations).
     virtual Eigen::VectorXd solve(const Cluster& c, double tau, const PositionBasis& P,
                                   const FixedPointOptions& fp, StepCost& cost);
-    /// The order-2 step s (bdf2.h) from the cluster c at X^m: one linear solve of the
-    /// first-order system of step s.effective_tau() on s.predictor with the BDF2 right-hand
-    /// sides. \throw SolverError (singular or non-finite system)
-    virtual Eigen::VectorXd solve_bdf2(const Cluster& c, const Bdf2Step& s, const PositionBasis& P,
-                                       StepCost& cost);
+    /// The order-2 step (bdf2.h) of length tau from the cluster c at X^m, whose previous step,
+    /// of length previous_tau, started at `previous`: the linear first-order step as the
+    /// predictor, then the BDF2 system on it (solve_corrector).
+    /// \throw SolverError (singular or non-finite system)
+    Eigen::VectorXd solve_bdf2(const Cluster& c, const std::vector<Vec3>& previous,
+                               double previous_tau, double tau, const PositionBasis& P,
+                               StepCost& cost);
     /// Forgets the patterns, factorisations and history (the cluster's mesh was replaced).
     virtual void reset();
     /// Forgets the factorisations and patterns, not the history: the next step factorises
@@ -111,6 +113,10 @@ class Scheme {
     /// One linear solve of the step's system with the r > 1 weights at `lagged`.
     Eigen::VectorXd solve_once(const Cluster& c, double tau, const PositionBasis& P,
                                const FacetNormals* lagged, StepCost& cost);
+    /// The order-2 corrector: one solve of the first-order system of step s.effective_tau()
+    /// on s.predictor with the BDF2 right-hand sides, on its own factorisation.
+    virtual Eigen::VectorXd solve_corrector(const Cluster& c, const Bdf2Step& s,
+                                            const PositionBasis& P, StepCost& cost);
     /// Newton's method for the r > 1 system (3.9), from X^m to convergence.
     Eigen::VectorXd solve_newton(const Cluster& c, double tau, const PositionBasis& P,
                                  const FixedPointOptions& fp, StepCost& cost);
@@ -118,10 +124,11 @@ class Scheme {
     SparseBuilder matrix_;
     Eigen::VectorXd rhs_;
     SparseDirectSolver solver_;
+    SparseDirectSolver corrector_; ///< the order-2 corrector's (its matrix is on the predictor)
     /// Set by a scheme that assembles with other pair weights than the cluster's own (the
     /// volume-exact step's averaged normals); null otherwise.
     const PairGeometry* weights_ = nullptr;
-    /// Set during an order-2 step (solve_bdf2): assemble adds its shift term, and each
+    /// Set during an order-2 corrector (solve_corrector): assemble adds its shift term, and each
     /// scheme's assemble_system its memory term; null otherwise.
     const Bdf2Step* bdf2_ = nullptr;
 

@@ -54,10 +54,10 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve(const Cluster& c, double tau, cons
                             : Scheme::solve(c, tau, P, fp, cost);
 }
 
-Eigen::VectorXd SurfaceDiffusionScheme::solve_bdf2(const Cluster& c, const Bdf2Step& s,
-                                                   const PositionBasis& P, StepCost& cost) {
-    return holds_volumes(c) ? solve_bdf2_exact_volumes(c, s, P, cost)
-                            : Scheme::solve_bdf2(c, s, P, cost);
+Eigen::VectorXd SurfaceDiffusionScheme::solve_corrector(const Cluster& c, const Bdf2Step& s,
+                                                        const PositionBasis& P, StepCost& cost) {
+    return holds_volumes(c) ? solve_corrector_exact_volumes(c, s, P, cost)
+                            : Scheme::solve_corrector(c, s, P, cost);
 }
 
 void SurfaceDiffusionScheme::reset() {

@@ -39,10 +39,6 @@ class SurfaceDiffusionScheme final : public Scheme {
     bool iterative(const Cluster& c) const override { return c.nonlinear() || holds_volumes(c); }
     Eigen::VectorXd solve(const Cluster& c, double tau, const PositionBasis& P,
                           const FixedPointOptions& fp, StepCost& cost) override;
-    /// Order 2; when volume-exact, the linear BDF2 step corrected by a uniform normal velocity
-    /// per body (volume_exact_sd.cpp).
-    Eigen::VectorXd solve_bdf2(const Cluster& c, const Bdf2Step& s, const PositionBasis& P,
-                               StepCost& cost) override;
     void reset() override;
     /// "sd.last_z", "sd.last_tau", "sd.last_end": the warm start (nothing before a
     /// volume-exact step).
@@ -50,6 +46,10 @@ class SurfaceDiffusionScheme final : public Scheme {
     void restore_history(const Cluster& c, const std::vector<NamedValues>& in) override;
 
   protected:
+    /// Order 2; when volume-exact, the linear BDF2 corrector plus a uniform normal velocity per
+    /// body (volume_exact_sd.cpp).
+    Eigen::VectorXd solve_corrector(const Cluster& c, const Bdf2Step& s, const PositionBasis& P,
+                                    StepCost& cost) override;
     void assemble_system(const Cluster& c, const PairGeometry& g, const PositionBasis& P,
                          double tau, const FacetNormals* lagged) override;
     void drop_systems() override;
@@ -57,7 +57,7 @@ class SurfaceDiffusionScheme final : public Scheme {
   private:
     /// The volume-exact step: the fixed point over the averaged normals (volume_exact_sd.cpp).
     /// Its order-2 form corrects the linear BDF2 step by the kappa-row terms of volume_rhs.
-    Eigen::VectorXd solve_bdf2_exact_volumes(const Cluster& c, const Bdf2Step& s,
+    Eigen::VectorXd solve_corrector_exact_volumes(const Cluster& c, const Bdf2Step& s,
                                              const PositionBasis& P, StepCost& cost);
     Eigen::VectorXd solve_exact_volumes(const Cluster& c, double tau, const PositionBasis& P,
                                         const FixedPointOptions& fp, StepCost& cost);

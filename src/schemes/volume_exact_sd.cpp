@@ -132,11 +132,11 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, do
     }
 }
 
-Eigen::VectorXd SurfaceDiffusionScheme::solve_bdf2_exact_volumes(const Cluster& c,
-                                                                 const Bdf2Step& s,
-                                                                 const PositionBasis& P,
-                                                                 StepCost& cost) {
-    const Eigen::VectorXd z0 = Scheme::solve_bdf2(c, s, P, cost);
+Eigen::VectorXd SurfaceDiffusionScheme::solve_corrector_exact_volumes(const Cluster& c,
+                                                                     const Bdf2Step& s,
+                                                                     const PositionBasis& P,
+                                                                     StepCost& cost) {
+    const Eigen::VectorXd z0 = Scheme::solve_corrector(c, s, P, cost);
     const int nb = c.n_bodies(), n = c.n_vertices();
     const SparseMatrix& M = matrix_.finish(); // the order-2 system just solved
     const PairGeometry g = pair_geometry(s.predictor);
@@ -145,11 +145,11 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_bdf2_exact_volumes(const Cluster& 
         Eigen::VectorXd rhs = Eigen::VectorXd::Zero(z0.size());
         add_kappa_rhs(*Z_, volume_rhs(s.predictor, g, Eigen::VectorXd::Unit(nb, b)), P.size(),
                       rhs);
-        Y.col(b) = solve_checked(solver_, M, rhs, s.tau, cost);
+        Y.col(b) = solve_checked(corrector_, M, rhs, s.tau, cost);
         for (int v = 0; v < n; ++v)
             U.block<3, 1>(3 * v, b) = P.displacement(Y.col(b), v);
     }
-    cost.volume_iterations = 1 + nb;
+    cost.volume_iterations = 2 + nb; // predictor, corrector, one response per body
     const Eigen::Map<const Eigen::VectorXd> target(c.target_volumes().data(), nb);
     Eigen::VectorXd coef = Eigen::VectorXd::Zero(nb), z;
     double last_error = 0;
