@@ -333,9 +333,21 @@ WatchOptions read_watch_options(lua_State* L, Options& o) {
 EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     EvolveOptions e;
     e.flow = parse_flow(o.string("flow")); // throws InvalidInput, caught by the caller's guard
-    e.tau = o.number("tau");
-    e.tau_start = o.number("tau_start", 0.0);
-    e.tau_growth = o.number("tau_growth", e.tau_growth);
+    e.adaptive = o.push("tau") == LUA_TSTRING;
+    lua_pop(L, 1);
+    if (e.adaptive) {
+        if (o.string("tau") != "auto") o.error("tau", "must be a number or \"auto\"");
+        e.tau = o.number("tau_start", 1e-6); // the first step
+        e.tol = o.number("tol", e.tol);
+        e.tau_max = o.number("tau_max", 0.0);
+        if (o.has("tau_growth")) o.error("tau_growth", "has no meaning with tau = \"auto\"");
+    } else {
+        e.tau = o.number("tau");
+        e.tau_start = o.number("tau_start", 0.0);
+        e.tau_growth = o.number("tau_growth", e.tau_growth);
+        if (o.has("tol") || o.has("tau_max"))
+            o.error(o.has("tol") ? "tol" : "tau_max", "needs tau = \"auto\"");
+    }
     if (o.has("T") && o.has("steps")) o.error("T", "and option 'steps' exclude each other");
     if (!o.has("T") && !o.has("steps")) o.error("T", "or option 'steps' is required");
     if (o.has("T")) {
@@ -404,6 +416,7 @@ int l_evolve(lua_State* L) {
         set_number(L, "solve_s", r.solve_seconds);
         set_integer(L, "factorizations", r.factorizations);
         set_number(L, "max_energy_increase", r.max_energy_increase);
+        set_integer(L, "rejected_steps", r.rejected_steps);
         lua_pushstring(L, r.stop_reason.c_str());
         lua_setfield(L, -2, "stop_reason");
         if (r.event) {
@@ -532,6 +545,7 @@ void push_step_report(lua_State* L, const StepReport& r) {
     set_number(L, "fixed_point_change", r.fixed_point_change);
     set_integer(L, "substeps", r.substeps);
     set_integer(L, "order", r.order);
+    if (r.order == 2) set_number(L, "error_estimate", r.error_estimate);
     set_integer(L, "volume_iterations", r.volume_iterations);
     if (r.volume_iterations > 0) set_number(L, "volume_error", r.volume_error);
 }

@@ -31,6 +31,13 @@ struct SolverError : Error {
 struct ConvergenceError : SolverError {
     using SolverError::SolverError;
 };
+/// An error-controlled step missed its tolerance (flows/stepper.h set_error_tolerance); the
+/// cluster is unchanged and the caller retries with a shorter step.
+struct StepRejected : Error {
+    StepRejected(const std::string& what, double error_estimate)
+        : Error(what), estimate(error_estimate) {}
+    double estimate; ///< the step's error estimate (StepCost::error_estimate)
+};
 /// The user asked to stop (Ctrl-C) an operation that cannot stop half-way and be kept
 /// (meshing); nothing was built or changed.
 struct Interrupted : Error {

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -117,15 +118,17 @@ void TimeStepper::set_fixed_point(FixedPointOptions o) {
     fixed_point_ = o;
 }
 
-StepReport TimeStepper::step(Cluster& c, Flow flow, double tau, bool project_onto_walls) {
+StepReport TimeStepper::step(Cluster& c, Flow flow, double tau, bool project_onto_walls,
+                             double tolerance) {
     if (!(std::isfinite(tau) && tau > 0))
         throw InvalidInput("step: tau must be positive and finite, got " + fmt(tau));
-    if (!scheme(flow).iterative(c)) return step_once(c, flow, tau, project_onto_walls);
+    if (!scheme(flow).iterative(c)) return step_once(c, flow, tau, project_onto_walls, tolerance);
     const std::vector<Vec3> X = c.positions();
     const double t = c.time();
     Previous previous = previous_;
     try {
-        return step_halving(c, flow, tau, project_onto_walls, fixed_point_.max_halvings);
+        return step_halving(c, flow, tau, project_onto_walls, fixed_point_.max_halvings,
+                            tolerance);
     } catch (const Error&) { // the first half may have been taken
         c.set_positions(X);
         c.set_time(t);
@@ -135,15 +138,15 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau, bool project_ont
 }
 
 StepReport TimeStepper::step_halving(Cluster& c, Flow flow, double tau, bool project,
-                                     int halvings) {
+                                     int halvings, double tolerance) {
     try {
-        return step_once(c, flow, tau, project);
+        return step_once(c, flow, tau, project, tolerance);
     } catch (const ConvergenceError&) {
         if (halvings == 0) throw;
     }
     // Two converged steps of tau/2 are two steps of the scheme: the bound (3.21) still holds.
-    StepReport first = step_halving(c, flow, tau / 2, project, halvings - 1);
-    StepReport r = step_halving(c, flow, tau / 2, project, halvings - 1);
+    StepReport first = step_halving(c, flow, tau / 2, project, halvings - 1, tolerance);
+    StepReport r = step_halving(c, flow, tau / 2, project, halvings - 1, tolerance);
     r.tau = tau;
     r.energy_before = first.energy_before;
     r.substeps += first.substeps;
@@ -153,10 +156,12 @@ StepReport TimeStepper::step_halving(Cluster& c, Flow flow, double tau, bool pro
     r.solve_seconds += first.solve_seconds;
     r.solver_iterations += first.solver_iterations;
     r.refactorized = r.refactorized || first.refactorized;
+    r.error_estimate = std::max(r.error_estimate, first.error_estimate);
     return r;
 }
 
-StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls) {
+StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls,
+                                  double tolerance) {
     if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
         throw GeometryError("step: " + facet_name(s, f) + " has zero area; the scheme needs "
                             "non-degenerate facets (assumption (A) of the seed)");
@@ -179,6 +184,11 @@ StepReport TimeStepper::step_once(Cluster& c, Flow flow, double tau, bool projec
         z = chosen.solve_bdf2(c, previous_.start, previous_.tau, tau, P, report);
     else if (P.size() > 0)
         z = chosen.solve(c, tau, P, fixed_point_, report);
+    if (tolerance > 0 && report.error_estimate > tolerance)
+        throw StepRejected("step: the error estimate " + fmt(report.error_estimate) +
+                               " exceeds the tolerance " + fmt(tolerance) + " (tau = " +
+                               fmt(tau) + "); the cluster is unchanged",
+                           report.error_estimate);
     std::vector<Vec3> X = displaced(c, P, z);
     if (project_onto_walls) project_onto_walls_of(c, X);
     if (auto [s, f] = find_degenerate_facet(c, X); s >= 0)

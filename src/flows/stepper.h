@@ -54,7 +54,10 @@ class TimeStepper {
     /// On any throw the cluster is unchanged.
     /// \throw InvalidInput (tau), GeometryError (degenerate facets before or after the step),
     ///        SolverError (singular or non-finite system), ConvergenceError (r > 1 iteration).
-    StepReport step(Cluster& c, Flow flow, double tau, bool project_onto_walls = false);
+    /// With tolerance > 0, an order-2 step whose error_estimate (schemes/scheme.h StepCost)
+    /// exceeds it is not taken: StepRejected, the cluster unchanged (tau = "auto" in evolve).
+    StepReport step(Cluster& c, Flow flow, double tau, bool project_onto_walls = false,
+                    double tolerance = 0);
     /// Forgets every cached pattern and factorisation (after the cluster's mesh was replaced).
     void reset();
     /// The schemes' history (Scheme::save_history), for a state file.
@@ -81,8 +84,10 @@ class TimeStepper {
     int order() const { return order_; }
 
   private:
-    StepReport step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls);
-    StepReport step_halving(Cluster& c, Flow flow, double tau, bool project, int halvings);
+    StepReport step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls,
+                         double tolerance);
+    StepReport step_halving(Cluster& c, Flow flow, double tau, bool project, int halvings,
+                            double tolerance);
     /// The scheme of a flow, made on first use.
     Scheme& scheme(Flow flow);
     static void check_no_body_vanishes(const Cluster& c, const std::vector<Vec3>& X, double tau);

@@ -36,12 +36,12 @@ std::string label(double v) {
 void write_history_csv(const std::string& path, const std::vector<HistoryRow>& rows) {
     require_rows(rows, "history");
     io::TextBuffer b;
-    b << "t,energy,volume_loss";
+    b << "t,tau,energy,volume_loss";
     for (std::size_t k = 0; k < rows.front().volumes.size(); ++k)
         b << ",V" << static_cast<int>(k + 1);
     b << '\n';
     for (const HistoryRow& r : rows) {
-        b << r.t << ',' << r.energy << ',' << r.volume_loss;
+        b << r.t << ',' << r.tau << ',' << r.energy << ',' << r.volume_loss;
         for (double v : r.volumes) b << ',' << v;
         b << '\n';
     }

@@ -8,11 +8,11 @@
 namespace froth {
 
 struct HistoryRow {
-    double t = 0, energy = 0, volume_loss = 0;
+    double t = 0, tau = 0, energy = 0, volume_loss = 0; ///< tau: the step that ended at t (0 at the start)
     std::vector<double> volumes;
 };
 
-/// Writes "t,energy,volume_loss,V1,V2,..." rows. \throw IoError, InvalidInput (no rows).
+/// Writes "t,tau,energy,volume_loss,V1,V2,..." rows. \throw IoError, InvalidInput (no rows).
 void write_history_csv(const std::string& path, const std::vector<HistoryRow>& rows);
 
 /// Writes the energy over time as an SVG plot with axes, ticks and labels.

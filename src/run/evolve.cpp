@@ -29,7 +29,11 @@ void check_options(const EvolveOptions& o) {
     if (o.every < 0) throw InvalidInput("evolve: every must be >= 0");
     if (has_T && o.duration / o.tau > 1e9)
         throw InvalidInput("evolve: T / tau = " + fmt(o.duration / o.tau) + " steps is too many");
-    if (o.tau_start != 0 && !(o.tau_start > 0 && o.tau_start <= o.tau))
+    if (o.adaptive && !(std::isfinite(o.tol) && o.tol > 0 && o.tol < 1))
+        throw InvalidInput("evolve: tol must be in (0, 1), got " + fmt(o.tol));
+    if (o.adaptive && !(o.tau_max >= 0 && std::isfinite(o.tau_max)))
+        throw InvalidInput("evolve: tau_max must be positive and finite, got " + fmt(o.tau_max));
+    if (!o.adaptive && o.tau_start != 0 && !(o.tau_start > 0 && o.tau_start <= o.tau))
         throw InvalidInput("evolve: tau_start must be in (0, tau], got " + fmt(o.tau_start));
     if (!(o.tau_growth > 1 && o.tau_growth <= 10))
         throw InvalidInput("evolve: tau_growth must be in (1, 10], got " + fmt(o.tau_growth));
@@ -41,7 +45,9 @@ void check_options(const EvolveOptions& o) {
                            "[0, 60) degrees and a step count >= 0");
 }
 
-HistoryRow history_row(const Report& r) { return {r.t, r.energy, r.volume_loss, r.volumes}; }
+HistoryRow history_row(const Report& r, double tau) {
+    return {r.t, tau, r.energy, r.volume_loss, r.volumes};
+}
 
 void write_history(const std::string& stem, const std::vector<HistoryRow>& rows) {
     write_history_csv(stem + ".csv", rows);
@@ -70,7 +76,7 @@ class Run {
             series_->add(c.time(), c, output_fields(c));
         }
         if (!o.history.empty()) { // written at once too, so a bad path fails before any step
-            history_.push_back(history_row(make_report(c)));
+            history_.push_back(history_row(make_report(c), 0));
             write_history(o.history, history_);
         }
         if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper);
@@ -84,11 +90,8 @@ class Run {
             r_.stop_reason = "interrupted";
             return false;
         }
-        // The last step of a T-run ends exactly at t_end, whatever the summed round-off.
-        double tau = planned_tau();
-        const bool last = o_.steps < 0 && c_.time() + tau * (1 + 1e-9) >= t_end_;
-        if (last) tau = t_end_ - c_.time();
-        std::optional<StepReport> s = try_step(tau);
+        bool last = false;
+        std::optional<StepReport> s = o_.adaptive ? try_adaptive_step(last) : try_step(planned_tau(), last);
         if (!s) return false;
         if (last) c_.set_time(t_end_), s->t = t_end_;
         record(*s);
@@ -132,22 +135,71 @@ class Run {
         return (c_.time() - t_start_) / (t_end_ - t_start_);
     }
 
+    /// tau, shortened if it would pass T: the last step of a T-run ends exactly at t_end,
+    /// whatever the summed round-off.
+    double clipped(double tau, bool& last) const {
+        last = o_.steps < 0 && c_.time() + tau * (1 + 1e-9) >= t_end_;
+        return last ? t_end_ - c_.time() : tau;
+    }
+
     /// A step that fails geometrically ends the run as a topology event; the step has left
     /// the cluster as it was. Bad input still throws.
-    std::optional<StepReport> try_step(double tau) {
+    std::optional<StepReport> try_step(double planned, bool& last) {
+        const double tau = clipped(planned, last);
         try {
             stepper_.set_exact_volumes(o_.exact_volumes);
             return stepper_.step(c_, o_.flow, tau, o_.project_onto_walls);
         } catch (const InvalidInput&) {
             throw;
-        } catch (const ConvergenceError& e) { // not a topology event: say what it was
+        } catch (const Error& e) {
+            stop_on(e);
+            return std::nullopt;
+        }
+    }
+
+    void stop_on(const Error& e) {
+        if (dynamic_cast<const ConvergenceError*>(&e)) { // not a topology event: say what it was
             r_.stop_reason = std::string("no convergence: ") + e.what() + " at t = " +
                              fmt(c_.time());
-            return std::nullopt;
-        } catch (const Error& e) {
-            r_.event = TopologyEvent{"step failed",
-                                     std::string(e.what()) + " at t = " + fmt(c_.time()), c_.time()};
-            return std::nullopt;
+            return;
+        }
+        r_.event = TopologyEvent{"step failed", std::string(e.what()) + " at t = " + fmt(c_.time()),
+                                 c_.time()};
+    }
+
+    /// tau = "auto": the step at tau_next_, retried shorter while it misses the tolerance
+    /// (by the estimate's square root: the first-order local error is O(tau^2)) or fails
+    /// (a quarter: a collapsing facet or a vanishing body ahead), down to 1e-6 of the first
+    /// step; the next tau from the accepted step's estimate, 0.2x to 2x.
+    std::optional<StepReport> try_adaptive_step(bool& last) {
+        const double tau_min = 1e-6 * o_.tau;
+        stepper_.set_exact_volumes(o_.exact_volumes);
+        for (;;) {
+            const double tau = clipped(tau_next_, last);
+            try {
+                StepReport s = stepper_.step(c_, o_.flow, tau, o_.project_onto_walls, o_.tol);
+                const double grow = s.error_estimate > 0 ? 0.9 * std::sqrt(o_.tol / s.error_estimate) : 2.0;
+                if (!last) tau_next_ = tau * std::clamp(grow, 0.2, 2.0);
+                if (o_.tau_max > 0) tau_next_ = std::min(tau_next_, o_.tau_max);
+                return s;
+            } catch (const InvalidInput&) {
+                throw;
+            } catch (const StepRejected& e) {
+                ++r_.rejected_steps;
+                tau_next_ = tau * std::clamp(0.9 * std::sqrt(o_.tol / e.estimate), 0.1, 0.5);
+            } catch (const Error& e) {
+                ++r_.rejected_steps;
+                tau_next_ = tau / 4;
+                if (tau_next_ < tau_min) {
+                    stop_on(e);
+                    return std::nullopt;
+                }
+            }
+            if (tau_next_ < tau_min) {
+                r_.stop_reason = "no convergence: the step needed to meet tol = " + fmt(o_.tol) +
+                                 " fell below " + fmt(tau_min) + " at t = " + fmt(c_.time());
+                return std::nullopt;
+            }
         }
     }
 
@@ -158,7 +210,7 @@ class Run {
         r_.max_energy_increase =
             std::max(r_.max_energy_increase, (s.energy - s.energy_before) / s.energy_before);
         written_last_ = false;
-        if (!o_.history.empty()) history_.push_back(history_row(s));
+        if (!o_.history.empty()) history_.push_back(history_row(s, s.tau));
     }
 
     /// True if the watch saw a topology change coming; a crossing state is not a valid one, so
@@ -210,6 +262,7 @@ class Run {
     const EvolveOptions& o_;
     const TopologyWatch watch_;
     const double t_start_, t_end_;
+    double tau_next_ = o_.tau; // adaptive: the next step to try
     EvolveResult r_;
     std::unique_ptr<PvdSeries> series_;
     std::vector<HistoryRow> history_;
@@ -230,7 +283,7 @@ void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper)
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
     check_options(o);
     stepper.set_fixed_point(o.fixed_point); // throws InvalidInput for bad values
-    stepper.set_order(o.order);
+    stepper.set_order(o.adaptive ? 2 : o.order); // the estimate is that of the order-2 step
     const EngineLoopScope polling; // Ctrl-C is served between steps, also inside on_step
     const auto start = Clock::now();
     Run run(c, stepper, o);

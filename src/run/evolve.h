@@ -14,7 +14,16 @@ namespace froth {
 
 struct EvolveOptions {
     Flow flow = Flow::SurfaceDiffusion;
-    double tau = 0;
+    double tau = 0; ///< the step; with adaptive, the first step
+    /// Error-controlled steps (tau = "auto"): order-2 steps whose error estimate
+    /// (StepCost::error_estimate, the first-order predictor's local error in the shape,
+    /// relative to the cluster's size) must stay below tol; a step that misses it is retried
+    /// shorter, and each next tau is chosen from the last estimate, 0.2x to 2x, at most
+    /// tau_max (0: no bound). A failing step (collapsing facet, singular system) is retried at
+    /// a quarter of its length down to 1e-6 of the first step before it ends the run.
+    bool adaptive = false;
+    double tol = 1e-4;
+    double tau_max = 0;
     /// If > 0, start with steps of tau_start, growing by tau_growth per step up to tau: large
     /// first steps from a non-smooth start (box edges, 90-degree junctions) lose volume.
     double tau_start = 0;
@@ -59,6 +68,7 @@ struct EvolveResult {
     double solve_seconds = 0;        ///< summed over the steps
     int factorizations = 0;          ///< numeric factorisations made (the rest reused one)
     double max_energy_increase = 0;  ///< largest relative energy increase of any step (0 if none)
+    int rejected_steps = 0;          ///< adaptive: steps retried shorter (error or failure)
     /// "T reached", "steps done", "on_step", "interrupted", "topology: <what, where, when>", or
     /// "no convergence: <...>" (the r > 1 fixed-point iteration of a step failed)
     std::string stop_reason;

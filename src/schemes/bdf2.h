@@ -50,4 +50,10 @@ struct Bdf2Step {
 Bdf2Step make_bdf2_step(const Cluster& c, std::vector<Vec3> predicted,
                         const std::vector<Vec3>& previous, double tau, double previous_tau);
 
+/// max_v |Q_v^T (a_v - b_v)| / size, Q_v an orthonormal basis of the unit normals of the
+/// surfaces at vertex v on the cluster's positions (one at a film vertex, two at a triple
+/// line), size the diagonal of the bounding box: how far apart the shapes of a and b are,
+/// blind to the tangential motion that BGN's schemes leave to the mesh.
+double shape_difference(const Cluster& c, const std::vector<Vec3>& a, const std::vector<Vec3>& b);
+
 } // namespace froth

@@ -48,6 +48,11 @@ struct StepCost {
     /// The order in time of the step's scheme: 2 for a BDF2 step (bdf2.h), 1 otherwise
     /// (also the first step of an order-2 run, which has no history yet).
     int order = 1;
+    /// Order 2 only (0 otherwise): the shape's difference between the step and its first-order
+    /// predictor, max_v |Q_v^T (X_v - X1_v)| over the cluster's size (Q_v the unit normals of
+    /// the vertex's surfaces; schemes/bdf2.h shape_difference): the first-order step's local
+    /// error, an upper estimate of this step's.
+    double error_estimate = 0;
 };
 
 /// The nonlinear iteration for r > 1 (Newton's method on (3.9), numerics.md "Anisotropic
@@ -110,9 +115,11 @@ class Scheme {
     /// patterns are rebuilt when the cluster's assembly revision changed.
     void assemble(const Cluster& c, double tau, const PositionBasis& P, const FacetNormals* lagged,
                   StepCost& cost);
-    /// One linear solve of the step's system with the r > 1 weights at `lagged`.
+    /// One linear solve of the step's system with the r > 1 weights at `lagged`, to the
+    /// backward error `tolerance`.
     Eigen::VectorXd solve_once(const Cluster& c, double tau, const PositionBasis& P,
-                               const FacetNormals* lagged, StepCost& cost);
+                               const FacetNormals* lagged, StepCost& cost,
+                               double tolerance = 1e-15);
     /// The order-2 corrector: one solve of the first-order system of step s.effective_tau()
     /// on s.predictor with the BDF2 right-hand sides, on its own factorisation.
     virtual Eigen::VectorXd solve_corrector(const Cluster& c, const Bdf2Step& s,
@@ -139,9 +146,11 @@ class Scheme {
     int revision_ = -1; ///< the cluster's assembly_revision() the patterns were built for
 };
 
-/// Solves M x = b, adding the cost; non-finite results are a SolverError.
+/// Solves M x = b, adding the cost; non-finite results are a SolverError. `tolerance`: the
+/// backward error to reach (SparseDirectSolver::solve).
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
-                              const Eigen::VectorXd& b, double tau, StepCost& cost);
+                              const Eigen::VectorXd& b, double tau, StepCost& cost,
+                              double tolerance = 1e-15);
 
 /// X^m + T z: the positions of a solution z of a step's system.
 std::vector<Vec3> displaced(const Cluster& c, const PositionBasis& P, const Eigen::VectorXd& z);

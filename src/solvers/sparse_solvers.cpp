@@ -209,7 +209,7 @@ Eigen::MatrixXd SparseDirectSolver::apply_factor(const Eigen::MatrixXd& B) const
 }
 
 Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b,
-                                          SolveStats* stats) {
+                                          SolveStats* stats, double tolerance) {
     if (A.rows() == 0) return b; // every vertex fixed: an empty system, which CHOLMOD would not take
     SolveStats s;
     auto apply_A = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return A * v; };
@@ -220,7 +220,8 @@ Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::Ve
     auto backward_error = [&](const Eigen::VectorXd& x) {
         return (b - apply_A(x)).norm() / (norm_A * x.norm() + b.norm());
     };
-    auto target = [&](const Eigen::VectorXd& x0) { return kTolerance * (norm_A * x0.norm() + b.norm()); };
+    const double tol = std::max(tolerance, kTolerance);
+    auto target = [&](const Eigen::VectorXd& x0) { return tol * (norm_A * x0.norm() + b.norm()); };
     Eigen::VectorXd x;
     bool need_factor = !(reuse_ && factorized_ && last_iterations_ <= kRefactorAfter);
     if (!need_factor) {
@@ -234,7 +235,7 @@ Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::Ve
         x = apply_factor(b);
         s.iterations = detail::gmres(apply_A, apply_P, b, x, target(x), kFreshIterations);
         if (s.iterations < 0) s.iterations = kFreshIterations;
-        if (!x.allFinite() || !(backward_error(x) <= kAcceptable))
+        if (!x.allFinite() || !(backward_error(x) <= std::max(tol, kAcceptable)))
             throw SolverError("solve: no accurate solution even with a fresh factorisation "
                               "(the system is numerically singular)");
     }

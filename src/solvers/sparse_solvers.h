@@ -45,7 +45,10 @@ class SparseDirectSolver {
     /// (Cholesky reads its lower half).
     /// \throw SolverError if A is not finite, singular, (Cholesky) not positive definite, or
     ///        the solve does not reach the tolerance even with a fresh factorisation.
-    Eigen::VectorXd solve(const SparseMatrix& A, const Eigen::VectorXd& b, SolveStats* stats = nullptr);
+    /// A looser `tolerance` (a normwise backward error above 1e-15) is for solves whose result
+    /// only needs to be close (the order-2 predictor): GMRES stops there.
+    Eigen::VectorXd solve(const SparseMatrix& A, const Eigen::VectorXd& b, SolveStats* stats = nullptr,
+                          double tolerance = 1e-15);
     /// Factorises A afresh (the pattern's analysis is kept) and solves A X = B for all columns
     /// of B with that factor: the plain direct method, one pair of triangular solves per
     /// column, for iterations that correct their own round-off (minimize).

@@ -28,10 +28,13 @@ local d = froth.double_bubble{h = 0.3}
 local rd = d:evolve{flow = "sd", tau = 1e-3, steps = 4, history = dir .. "/db", progress = false}
 local rows = {}
 for line in io.lines(dir .. "/db.csv") do rows[#rows + 1] = line end
-T.assert_equal(rows[1], "t,energy,volume_loss,V1,V2", "CSV header")
+T.assert_equal(rows[1], "t,tau,energy,volume_loss,V1,V2", "CSV header")
 T.assert_equal(#rows, 1 + 5, "the start and 4 steps")
-local t_last, e_last = rows[#rows]:match("^([^,]+),([^,]+),")
+local t_last, tau_last, e_last = rows[#rows]:match("^([^,]+),([^,]+),([^,]+),")
 T.assert_equal(tonumber(t_last), rd.t, "last row time")
+T.assert_equal(tonumber(tau_last), 1e-3, "last row tau")
+T.assert_equal(tonumber(rows[2]:match("^[^,]+,([^,]+),")), 0, "the start row has tau 0")
+T.assert_equal(tonumber(rows[3]:match("^[^,]+,([^,]+),")), 1e-3, "a step row has its tau")
 T.assert_equal(tonumber(e_last), rd.energy, "last row energy (round-trip exact)")
 local svg = io.open(dir .. "/db.svg"):read("a")
 T.assert_true(svg:find("<polyline", 1, true) ~= nil, "the SVG has the energy curve")

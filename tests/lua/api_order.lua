@@ -1,7 +1,8 @@
 -- order = 2 (BDF2, schemes/bdf2.h) in c:step and c:evolve: the temporal order on the shrinking
 -- sphere (the order-1 scheme must fail the same assertion), when the history is used and when
 -- it is void, clones and state files that continue bit for bit, volume-exact surface
--- diffusion at order 2 on a cluster with triple lines, walls, r > 1 anisotropy, and errors.
+-- diffusion at order 2 on a cluster with triple lines, walls, r > 1 anisotropy, tau = "auto"
+-- against fixed steps, and errors.
 local T = require("froth.test")
 
 -- Mean curvature flow of the icosphere (162 vertices, symmetric: BGN moves its vertices
@@ -120,6 +121,48 @@ if froth.has("gmsh") then
   T.assert_true(rh.energy < rh.energy_before, "r > 1 at order 2 lowers the energy")
 end
 
+-- tau = "auto": the sphere to t = 0.24 (near its extinction, where it speeds up). The
+-- error of R from the volume against order 2 at T/4096; auto at tol = 3e-5 must reach an error
+-- that the fixed tau reaches only with more steps. Measured: auto 311 steps, 4.4e-3; fixed
+-- 512 steps 7.2e-3 (and 256: 2.5e-2).
+local function vol_radius(c) return (3 * c:volumes()[1] / (4 * math.pi)) ^ (1 / 3) end
+local ref_auto = froth.sphere{levels = 2}
+ref_auto:evolve{flow = "mcf", tau = 0.24 / 4096, T = 0.24, order = 2}
+local R_ref = vol_radius(ref_auto)
+local adaptive = froth.sphere{levels = 2}
+local worst_estimate, orders = 0, {}
+local ra = adaptive:evolve{flow = "mcf", tau = "auto", tol = 3e-5, T = 0.24,
+  on_step = function(s)
+    worst_estimate = math.max(worst_estimate, s.error_estimate or 0)
+    orders[s.order] = (orders[s.order] or 0) + 1
+  end}
+T.assert_equal(ra.stop_reason, "T reached", "auto reaches T")
+T.assert_near(adaptive:time(), 0.24, 1e-15, "auto ends at T exactly")
+T.assert_true(worst_estimate <= 3e-5, "every accepted step met tol", worst_estimate)
+T.assert_equal(orders[1], 1, "auto: only the first step is of order 1")
+local e_auto = math.abs(vol_radius(adaptive) - R_ref) / R_ref
+local n_fixed = 16
+while true do
+  local f = froth.sphere{levels = 2}
+  f:evolve{flow = "mcf", tau = 0.24 / n_fixed, T = 0.24, order = 2}
+  if math.abs(vol_radius(f) - R_ref) / R_ref <= e_auto or n_fixed >= 4096 then break end
+  n_fixed = 2 * n_fixed
+end
+T.assert_true(ra.steps < n_fixed, "auto needs fewer steps than the best fixed tau",
+              ra.steps .. " auto against " .. n_fixed .. " fixed, error " .. e_auto)
+-- A first step far too long for the tolerance (it has no estimate: tau_start sets it) makes
+-- the next ones be rejected and retried shorter.
+local jump = froth.sphere{levels = 2}
+local rj = jump:evolve{flow = "mcf", tau = "auto", tol = 1e-6, tau_start = 1e-2, steps = 5}
+T.assert_true(rj.rejected_steps > 0, "steps that miss tol are rejected", rj.rejected_steps)
+T.assert_true(jump:time() < 1e-2 + 4 * 2e-2, "and retried shorter", jump:time())
+-- tau_max bounds the steps.
+local capped = froth.sphere{levels = 1}
+local taus = {}
+capped:evolve{flow = "mcf", tau = "auto", tol = 1e-2, tau_max = 2e-3, steps = 12,
+              on_step = function(s) taus[#taus + 1] = s.tau end}
+T.assert_true(math.max(table.unpack(taus)) <= 2e-3, "tau_max bounds tau", math.max(table.unpack(taus)))
+
 -- Errors: nothing changes.
 local e = froth.sphere{levels = 1}
 local X = T.positions(e)
@@ -129,6 +172,14 @@ T.check_error("evolve: option 'order' must be 1 or 2", e.evolve, e,
 T.check_error("sphere: option 'levels' must be in 0..7", froth.sphere, {levels = 8})
 T.check_error("sphere: option 'levels' and option 'h' exclude each other", froth.sphere,
               {levels = 1, h = 0.1})
+T.check_error("evolve: option 'tau' must be a number or \"auto\"", e.evolve, e,
+              {flow = "mcf", tau = "fast", steps = 1})
+T.check_error("evolve: option 'tol' needs tau = \"auto\"", e.evolve, e,
+              {flow = "mcf", tau = 1e-3, tol = 1e-4, steps = 1})
+T.check_error("evolve: option 'tau_growth' has no meaning with tau = \"auto\"", e.evolve, e,
+              {flow = "mcf", tau = "auto", tau_growth = 2, steps = 1})
+T.check_error("evolve: tol must be in (0, 1), got 0", e.evolve, e,
+              {flow = "mcf", tau = "auto", tol = 0, steps = 1})
 T.assert_true(T.same_positions(e, X), "a refused order changes nothing")
 
 return T.summary()

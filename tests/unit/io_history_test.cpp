@@ -22,7 +22,8 @@ std::string read(const std::string& path) {
 std::vector<HistoryRow> decaying_rows(int n) {
     std::vector<HistoryRow> rows;
     for (int k = 0; k < n; ++k)
-        rows.push_back({0.01 * k, 15.0 + std::exp(-0.3 * k), 1e-4 * k, {2.0 + 1e-3 * k, 1.0 / 3}});
+        rows.push_back({0.01 * k, k ? 0.01 : 0.0, 15.0 + std::exp(-0.3 * k), 1e-4 * k,
+                        {2.0 + 1e-3 * k, 1.0 / 3}});
     return rows;
 }
 
@@ -33,14 +34,15 @@ TEST(History, CsvReadsBackExactly) {
     std::istringstream in(read(path));
     std::string line;
     std::getline(in, line);
-    EXPECT_EQ(line, "t,energy,volume_loss,V1,V2");
+    EXPECT_EQ(line, "t,tau,energy,volume_loss,V1,V2");
     for (const HistoryRow& r : rows) {
         ASSERT_TRUE(std::getline(in, line));
-        double t, e, loss, v1, v2;
+        double t, tau, e, loss, v1, v2;
         char c;
         std::istringstream fields(line);
-        fields >> t >> c >> e >> c >> loss >> c >> v1 >> c >> v2;
+        fields >> t >> c >> tau >> c >> e >> c >> loss >> c >> v1 >> c >> v2;
         EXPECT_EQ(t, r.t);
+        EXPECT_EQ(tau, r.tau);
         EXPECT_EQ(e, r.energy);
         EXPECT_EQ(loss, r.volume_loss);
         EXPECT_EQ(v1, r.volumes[0]);

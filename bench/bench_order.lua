@@ -1,0 +1,87 @@
+-- The temporal order of c:step{order = 1 | 2} (docs/benchmarks.md "Order in time"):
+--   froth bench/bench_order.lua [cases=sphere,sd,bubble] [levels=4]
+-- sphere: MCF of the icosphere (froth.sphere{levels}) to t = 0.05; errors of the energy and of
+--   R from the volume against the same scheme at tau = T/1024 (the time error), and of R
+--   against the exact sqrt(1 - 4t) (time and space).
+-- sd: surface diffusion of r = 1 + 0.05 P2(cos theta) on the icosphere of level 2 to t = 0.02,
+--   relaxed first to BGN's tangential condition (1000 steps of 1e-9); energy error against
+--   order 2 at T/1024.
+-- bubble: MCF of froth.double_bubble{h = 0.2} to t = 0.02 after 20 order-1 steps of 1e-3;
+--   energy and volume errors against order 2 at T/512.
+-- Slopes are log2 of the ratio of successive errors. Seconds are the run's wall time.
+local opts = require("froth.script").options({cases = "sphere,sd,bubble", levels = 4, relax = 0},
+                                             arg)
+local cases = {}
+for name in tostring(opts.cases):gmatch("[^,]+") do cases[name] = true end
+
+local function radius(c) return (3 * c:volumes()[1] / (4 * math.pi)) ^ (1 / 3) end
+
+-- relax > 0: after each run, that many steps of 1e-9 of the same flow settle BGN's tangential
+-- condition without changing the shape (by 1e-9 per step), so what is left is the shape's error.
+local function settle(c, flow)
+  if opts.relax > 0 then c:evolve{flow = flow, tau = 1e-9, steps = opts.relax, progress = false} end
+end
+
+local function table_of(title, make, flow, T, ns, ref_n, measures)
+  print(("== %s%s"):format(title, opts.relax > 0 and (", settled by %d steps of 1e-9"):format(
+        opts.relax) or ""))
+  local ref = make()
+  ref:evolve{flow = flow, tau = T / ref_n, steps = ref_n, order = 2, progress = false}
+  settle(ref, flow)
+  local head = "order  tau        steps  seconds"
+  for _, m in ipairs(measures) do head = head .. ("  %-10s slope"):format(m.name) end
+  print(head)
+  for order = 1, 2 do
+    local last = {}
+    for _, n in ipairs(ns) do
+      local c = make()
+      local r = c:evolve{flow = flow, tau = T / n, steps = n, order = order, progress = false}
+      local line = ("%5d  %-9.3e  %5d  %7.3f"):format(order, T / n, n, r.wall_s)
+      settle(c, flow)
+      for k, m in ipairs(measures) do
+        local e = math.abs(m.value(c, ref))
+        local slope = last[k] and ("%5.2f"):format(math.log(last[k] / e, 2)) or "    -"
+        line = line .. ("  %-10.3e %s"):format(e, slope)
+        last[k] = e
+      end
+      print(line)
+    end
+  end
+  print()
+end
+
+if cases.sphere then
+  local T = 0.05
+  local make = function() return froth.sphere{levels = opts.levels} end
+  table_of(("MCF of the icosphere, level %d (%d vertices), to t = %g"):format(opts.levels,
+           make():info().vertices, T), make, "mcf", T, {8, 16, 32, 64, 128}, 1024, {
+    {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
+    {name = "R(vol)", value = function(c, ref) return radius(c) - radius(ref) end},
+    {name = "R-exact", value = function(c) return radius(c) - math.sqrt(1 - 4 * T) end},
+  })
+end
+
+if cases.sd then
+  local base = froth.sphere{levels = 2}
+  for v = 1, base:info().vertices do
+    local x = base:vertex(v)
+    local r = 1 + 0.05 * (1.5 * x[3] * x[3] - 0.5)
+    base:set_vertex(v, r * x[1], r * x[2], r * x[3])
+  end
+  base:evolve{flow = "sd", tau = 1e-9, steps = 1000, progress = false}
+  table_of("SD of a P2 mode on the icosphere, level 2 (162 vertices), to t = 0.02",
+           function() return base:clone() end, "sd", 0.02, {8, 16, 32, 64, 128}, 1024, {
+    {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
+  })
+end
+
+if cases.bubble and froth.has("gmsh") then
+  local base = froth.double_bubble{h = 0.2}
+  base:evolve{flow = "mcf", tau = 1e-3, steps = 20, progress = false}
+  table_of(("MCF of the double bubble, h = 0.2 (%d vertices), to t = 0.02 after t = 0.02"):format(
+           base:info().vertices), function() return base:clone() end, "mcf", 0.02,
+           {4, 8, 16, 32, 64}, 512, {
+    {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
+    {name = "volume 1", value = function(c, ref) return c:volumes()[1] - ref:volumes()[1] end},
+  })
+end
