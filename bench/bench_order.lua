@@ -1,5 +1,5 @@
 -- The temporal order of c:step{order = 1 | 2} (docs/benchmarks.md "Order in time"):
---   froth bench/bench_order.lua [cases=sphere,sd,bubble] [levels=4]
+--   froth bench/bench_order.lua [cases=sphere,sd,bubble,auto] [levels=4] [relax=0]
 -- sphere: MCF of the icosphere (froth.sphere{levels}) to t = 0.05; errors of the energy and of
 --   R from the volume against the same scheme at tau = T/1024 (the time error), and of R
 --   against the exact sqrt(1 - 4t) (time and space).
@@ -8,8 +8,10 @@
 --   order 2 at T/1024.
 -- bubble: MCF of froth.double_bubble{h = 0.2} to t = 0.02 after 20 order-1 steps of 1e-3;
 --   energy and volume errors against order 2 at T/512.
+-- auto: tau = "auto" against fixed order-2 steps, MCF of the icosphere of level 2 to t = 0.24
+--   (extinction at 0.25); error of R from the volume against order 2 at T/4096.
 -- Slopes are log2 of the ratio of successive errors. Seconds are the run's wall time.
-local opts = require("froth.script").options({cases = "sphere,sd,bubble", levels = 4, relax = 0},
+local opts = require("froth.script").options({cases = "sphere,sd,bubble,auto", levels = 4, relax = 0},
                                              arg)
 local cases = {}
 for name in tostring(opts.cases):gmatch("[^,]+") do cases[name] = true end
@@ -84,4 +86,24 @@ if cases.bubble and froth.has("gmsh") then
     {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
     {name = "volume 1", value = function(c, ref) return c:volumes()[1] - ref:volumes()[1] end},
   })
+end
+
+if cases.auto then
+  local T = 0.24
+  print(("== tau = \"auto\" against fixed steps: MCF of the icosphere, level 2, to t = %g"):format(T))
+  local ref = froth.sphere{levels = 2}
+  ref:evolve{flow = "mcf", tau = T / 4096, T = T, order = 2, progress = false}
+  local function err(c) return math.abs(radius(c) - radius(ref)) / radius(ref) end
+  print("run                 steps  rejected  seconds  error")
+  for _, tol in ipairs{1e-3, 1e-4, 3e-5, 1e-5} do
+    local c = froth.sphere{levels = 2}
+    local r = c:evolve{flow = "mcf", tau = "auto", tol = tol, T = T, progress = false}
+    print(("auto tol = %-7.0e  %5d  %8d  %7.3f  %.3e"):format(tol, r.steps, r.rejected_steps,
+          r.wall_s, err(c)))
+  end
+  for _, n in ipairs{128, 256, 512, 1024} do
+    local c = froth.sphere{levels = 2}
+    local r = c:evolve{flow = "mcf", tau = T / n, T = T, order = 2, progress = false}
+    print(("fixed, order 2      %5d  %8s  %7.3f  %.3e"):format(n, "", r.wall_s, err(c)))
+  end
 end
