@@ -293,8 +293,9 @@ int l_sphere(lua_State* L) {
     lua_pop(L, 1);
     if (o.has("levels") && o.has("h")) o.error("levels", "and option 'h' exclude each other");
     const long long levels = o.integer("levels", -1);
-    if (o.has("levels") && (levels < 0 || levels > kMaxSubdivisions))
-        o.error("levels", ("must be in 0.." + std::to_string(kMaxSubdivisions)).c_str());
+    constexpr int kMaxSphereLevels = 9; // 2,621,442 vertices
+    if (o.has("levels") && (levels < 0 || levels > kMaxSphereLevels))
+        o.error("levels", ("must be in 0.." + std::to_string(kMaxSphereLevels)).c_str());
     o.finish();
     return guarded(L, [&] {
         if (levels < 0) {

@@ -81,7 +81,7 @@ ClusterSpec build_sphere(const SphereOptions& o) {
     if (!(std::isfinite(o.R) && o.R > 0))
         throw InvalidInput(op + ": R must be positive, got " + num(o.R));
     if (!o.center.allFinite()) throw InvalidInput(op + ": center must be finite");
-    check_h(op, o.h, 0.005 * o.R, o.R, 4 * std::numbers::pi * o.R * o.R);
+    check_h(op, o.h, 0.0035 * o.R, o.R, 4 * std::numbers::pi * o.R * o.R); // about 1.2M vertices
     return in_session<GeometryError>(op + ": gmsh failed: ", [&] {
         // Mesh the unit sphere at the origin and map it: OCC's Frontal-Delaunay fails on some
         // offset spheres (R = 2 at (1,-2,3)) and gmsh silently falls back to MeshAdapt, 10x

@@ -19,7 +19,8 @@ struct TriangleSurface {
 /// The icosahedron, its edges bisected `subdivisions` times and projected to the unit sphere:
 /// 10 * 4^k + 2 vertices, 20 * 4^k triangles. It contains +-e_x, +-e_y, +-e_z for k >= 1 (they
 /// are edge midpoints of the icosahedron with vertices (0, +-1, +-phi) and its cyclic shifts).
-/// subdivisions must be in 0..kMaxSubdivisions (checked by the callers, which name the option).
+/// The callers bound subdivisions and name the option (the Wulff shapes: kMaxSubdivisions;
+/// froth.sphere{levels}: 9, 2621442 vertices).
 TriangleSurface icosphere(int subdivisions);
 
 /// The largest subdivision level accepted (163842 vertices).

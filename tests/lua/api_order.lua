@@ -169,7 +169,7 @@ local X = T.positions(e)
 T.check_error("step: option 'order' must be 1 or 2", e.step, e, {flow = "mcf", tau = 1e-3, order = 3})
 T.check_error("evolve: option 'order' must be 1 or 2", e.evolve, e,
               {flow = "mcf", tau = 1e-3, steps = 1, order = 0})
-T.check_error("sphere: option 'levels' must be in 0..7", froth.sphere, {levels = 8})
+T.check_error("sphere: option 'levels' must be in 0..9", froth.sphere, {levels = 10})
 T.check_error("sphere: option 'levels' and option 'h' exclude each other", froth.sphere,
               {levels = 1, h = 0.1})
 T.check_error("evolve: option 'tau' must be a number or \"auto\"", e.evolve, e,

@@ -1,0 +1,21 @@
+-- Scaling of a step with the vertex count (docs/benchmarks.md "Scale"): the icosphere
+-- froth.sphere{levels = L} (10 * 4^L + 2 vertices), first steps and steady steps.
+--   froth bench/bench_scale.lua [flow=mcf] [levels=5,6,7] [steps=4] [order=1] [tau=1e-3]
+-- Prints per level: vertices, build seconds, first step (pattern, analysis, factorisation),
+-- the mean of the later steps, their solve part, and factorisations. Peak memory: run under
+-- /usr/bin/time -v (one level per run, since the peak is the process's).
+local opts = require("froth.script").options({flow = "mcf", levels = "5,6,7", steps = 4,
+                                              order = 1, tau = 1e-3}, arg)
+print("flow  order  vertices  build_s  first_s  step_s  solve_s  unknowns  factorisations")
+for level in tostring(opts.levels):gmatch("[^,]+") do
+  local t0 = os.clock()
+  local c = froth.sphere{levels = tonumber(level)}
+  local build = os.clock() - t0
+  local first = c:step{flow = opts.flow, tau = opts.tau, order = opts.order}
+  local first_s = first.assemble_s + first.solve_s
+  local r = c:evolve{flow = opts.flow, tau = opts.tau, steps = opts.steps, order = opts.order,
+                     progress = false, watch = false}
+  print(("%-4s  %5d  %8d  %7.2f  %7.2f  %6.3f  %7.3f  %8d  %d"):format(opts.flow, opts.order,
+        c:info().vertices, build, first_s, r.wall_s / r.steps, r.solve_s / r.steps,
+        first.unknowns, r.factorizations))
+end
