@@ -340,6 +340,8 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
         e.tau = o.number("tau_start", 1e-6); // the first step
         e.tol = o.number("tol", e.tol);
         e.tau_max = o.number("tau_max", 0.0);
+        if (o.has("tau_max") && !(std::isfinite(e.tau_max) && e.tau_max > 0))
+            o.error("tau_max", "must be positive and finite");
         if (o.has("tau_growth")) o.error("tau_growth", "has no meaning with tau = \"auto\"");
     } else {
         e.tau = o.number("tau");

@@ -32,7 +32,8 @@ void check_options(const EvolveOptions& o) {
     if (o.adaptive && !(std::isfinite(o.tol) && o.tol > 0 && o.tol < 1))
         throw InvalidInput("evolve: tol must be in (0, 1), got " + fmt(o.tol));
     if (o.adaptive && !(o.tau_max >= 0 && std::isfinite(o.tau_max)))
-        throw InvalidInput("evolve: tau_max must be positive and finite, got " + fmt(o.tau_max));
+        throw InvalidInput("evolve: tau_max must be positive and finite (0: none), got " +
+                           fmt(o.tau_max));
     if (!o.adaptive && o.tau_start != 0 && !(o.tau_start > 0 && o.tau_start <= o.tau))
         throw InvalidInput("evolve: tau_start must be in (0, tau], got " + fmt(o.tau_start));
     if (!(o.tau_growth > 1 && o.tau_growth <= 10))
@@ -91,7 +92,8 @@ class Run {
             return false;
         }
         bool last = false;
-        std::optional<StepReport> s = o_.adaptive ? try_adaptive_step(last) : try_step(planned_tau(), last);
+        std::optional<StepReport> s =
+            o_.adaptive ? try_adaptive_step(last) : try_step(planned_tau(), last);
         if (!s) return false;
         if (last) c_.set_time(t_end_), s->t = t_end_;
         record(*s);
@@ -178,7 +180,8 @@ class Run {
             const double tau = clipped(tau_next_, last);
             try {
                 StepReport s = stepper_.step(c_, o_.flow, tau, o_.project_onto_walls, o_.tol);
-                const double grow = s.error_estimate > 0 ? 0.9 * std::sqrt(o_.tol / s.error_estimate) : 2.0;
+                const double grow =
+                    s.error_estimate > 0 ? 0.9 * std::sqrt(o_.tol / s.error_estimate) : 2.0;
                 if (!last) tau_next_ = tau * std::clamp(grow, 0.2, 2.0);
                 if (o_.tau_max > 0) tau_next_ = std::min(tau_next_, o_.tau_max);
                 return s;
@@ -262,7 +265,8 @@ class Run {
     const EvolveOptions& o_;
     const TopologyWatch watch_;
     const double t_start_, t_end_;
-    double tau_next_ = o_.tau; // adaptive: the next step to try
+    // adaptive: the next step to try (the first: tau_start, at most tau_max)
+    double tau_next_ = o_.tau_max > 0 ? std::min(o_.tau, o_.tau_max) : o_.tau;
     EvolveResult r_;
     std::unique_ptr<PvdSeries> series_;
     std::vector<HistoryRow> history_;

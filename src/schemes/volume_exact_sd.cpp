@@ -24,6 +24,7 @@
 
 #include <Eigen/LU>
 
+#include <limits>
 #include <string>
 
 namespace froth {
@@ -151,21 +152,22 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_corrector_exact_volumes(const Clus
     }
     cost.volume_iterations = 2 + nb; // predictor, corrector, one response per body
     const Eigen::Map<const Eigen::VectorXd> target(c.target_volumes().data(), nb);
-    Eigen::VectorXd coef = Eigen::VectorXd::Zero(nb), z;
-    double last_error = 0;
-    for (int it = 0;; ++it) {
+    Eigen::VectorXd coef = Eigen::VectorXd::Zero(nb), z, best;
+    double best_error = std::numeric_limits<double>::infinity();
+    for (int it = 0; it <= 10; ++it) {
         z = z0 + Y * coef;
         const std::vector<Vec3> X = displaced(c, P, z);
         const std::vector<double> V = body_volumes(c, X);
-        cost.volume_error = max_target_deviation(c, V);
+        const double error = max_target_deviation(c, V);
         // Newton's method on a cubic: done at the tolerance, or once round-off stops it.
-        if (cost.volume_error <= kVolumeTolerance ||
-            (it > 0 && cost.volume_error > 0.5 * last_error) || it == 10)
-            break;
-        last_error = cost.volume_error;
+        const bool stalled = error > 0.5 * best_error;
+        if (error < best_error) best = z, best_error = error;
+        if (error <= kVolumeTolerance || stalled) break;
         const Eigen::MatrixXd J = body_volume_gradients(c, X).transpose() * U;
         coef -= J.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(V.data(), nb) - target);
     }
+    z = std::move(best);
+    cost.volume_error = best_error;
     if (!(cost.volume_error <= 1e3 * kVolumeTolerance))
         throw ConvergenceError("step: the order-2 surface diffusion step could not hold the "
                                "volumes (volume error " + fmt(cost.volume_error) + ", tau = " +

@@ -162,6 +162,9 @@ local taus = {}
 capped:evolve{flow = "mcf", tau = "auto", tol = 1e-2, tau_max = 2e-3, steps = 12,
               on_step = function(s) taus[#taus + 1] = s.tau end}
 T.assert_true(math.max(table.unpack(taus)) <= 2e-3, "tau_max bounds tau", math.max(table.unpack(taus)))
+local first = froth.sphere{levels = 1}
+local r_first = first:evolve{flow = "mcf", tau = "auto", tau_start = 1e-2, tau_max = 1e-3, steps = 1}
+T.assert_equal(r_first.t, 1e-3, "tau_max bounds the first step too")
 
 -- Errors: nothing changes.
 local e = froth.sphere{levels = 1}
@@ -180,6 +183,8 @@ T.check_error("evolve: option 'tau_growth' has no meaning with tau = \"auto\"", 
               {flow = "mcf", tau = "auto", tau_growth = 2, steps = 1})
 T.check_error("evolve: tol must be in (0, 1), got 0", e.evolve, e,
               {flow = "mcf", tau = "auto", tol = 0, steps = 1})
+T.check_error("evolve: option 'tau_max' must be positive and finite", e.evolve, e,
+              {flow = "mcf", tau = "auto", tau_max = 0, steps = 1})
 T.assert_true(T.same_positions(e, X), "a refused order changes nothing")
 
 return T.summary()
