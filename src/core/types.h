@@ -18,4 +18,12 @@ struct NamedValues {
     std::vector<double> values;
 };
 
+/// The values of the array called `name` in `arrays`, or null if there is none.
+inline const std::vector<double>* find_named(const std::vector<NamedValues>& arrays,
+                                             const char* name) {
+    for (const NamedValues& a : arrays)
+        if (a.name == name) return &a.values;
+    return nullptr;
+}
+
 } // namespace froth

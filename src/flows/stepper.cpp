@@ -58,11 +58,7 @@ void TimeStepper::restore_history(const Cluster& c, const std::vector<NamedValue
     reset();
     scheme(Flow::MeanCurvature).restore_history(c, history);
     scheme(Flow::SurfaceDiffusion).restore_history(c, history);
-    const auto find = [&](const char* name) -> const std::vector<double>* {
-        for (const NamedValues& a : history)
-            if (a.name == name) return &a.values;
-        return nullptr;
-    };
+    const auto find = [&](const char* name) { return find_named(history, name); };
     const std::vector<double>*start = find("bdf2.start"), *tau = find("bdf2.tau"),
                            *flow = find("bdf2.flow");
     if (!start && !tau && !flow) return;

@@ -79,11 +79,7 @@ void SurfaceDiffusionScheme::save_history(std::vector<NamedValues>& out) const {
 
 void SurfaceDiffusionScheme::restore_history(const Cluster& c,
                                              const std::vector<NamedValues>& in) {
-    const auto find = [&](const char* name) -> const std::vector<double>* {
-        for (const NamedValues& a : in)
-            if (a.name == name) return &a.values;
-        return nullptr;
-    };
+    const auto find = [&](const char* name) { return find_named(in, name); };
     const std::vector<double>*z = find("sd.last_z"), *tau = find("sd.last_tau"),
                            *end = find("sd.last_end");
     if (!z && !tau && !end) return;
