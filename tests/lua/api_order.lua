@@ -38,7 +38,7 @@ T.assert_true(err2[3] < 0.1 * err1[3], "order 2 is 10x more accurate at tau = T/
 -- tangential condition (1000 steps of 1e-9: it is met step by step, not in time, so an
 -- unrelaxed start adds an error that depends on the number of steps, not on tau). The vertices'
 -- tangential motion lags the shape by a number of steps, not a time, which both orders share
--- (numerics.md): measured, order 1 has slope 1.0 and order 2 1.1-1.4, 4.6-7x more accurate.
+-- (numerics.md): measured, order 1 has slope 1.0 and order 2 1.0-1.4, 4.6-7x more accurate.
 local mode = froth.sphere{levels = 2}
 for v = 1, mode:info().vertices do
   local x = mode:vertex(v)
