@@ -38,11 +38,12 @@ void TimeStepper::reset() {
     previous_ = Previous();
 }
 
-std::vector<NamedValues> TimeStepper::history() const {
+std::vector<NamedValues> TimeStepper::history(const Cluster& c) const {
     std::vector<NamedValues> h;
     if (mcf_) mcf_->save_history(h);
     if (sd_) sd_->save_history(h);
-    if (!previous_.end.empty()) { // saved with the cluster in the state it ended in
+    if (!previous_.end.empty() && previous_.end == c.positions() &&
+        previous_.revision == c.materials_revision()) {
         std::vector<double> start;
         start.reserve(3 * previous_.start.size());
         for (const Vec3& x : previous_.start)

@@ -60,8 +60,10 @@ class TimeStepper {
                     double tolerance = 0);
     /// Forgets every cached pattern and factorisation (after the cluster's mesh was replaced).
     void reset();
-    /// The schemes' history (Scheme::save_history), for a state file.
-    std::vector<NamedValues> history() const;
+    /// The schemes' history (Scheme::save_history), for a state file of c; the order-2
+    /// history only while c is still in the state the last step left (a loaded copy must not
+    /// revive one the original would no longer use).
+    std::vector<NamedValues> history(const Cluster& c) const;
     /// Puts a saved history back (on the cluster it was saved with). \throw InvalidInput
     void restore_history(const Cluster& c, const std::vector<NamedValues>& history);
     /// Forgets the factorisations, keeping the history: called where a state is saved, so that

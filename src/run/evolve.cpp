@@ -280,7 +280,7 @@ class Run {
 } // namespace
 
 void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper) {
-    write_state_file(path, capture_state(c, stepper.history()));
+    write_state_file(path, capture_state(c, stepper.history(c)));
     stepper.drop_factorizations();
 }
 
