@@ -286,6 +286,14 @@ FixedPointOptions read_fixed_point(lua_State* L, Options& o, const char* what) {
     return f;
 }
 
+/// sd_solver = "auto" | "lu" | "blocks" (SaddleSolver).
+SaddleSolver read_sd_solver(Options& o) {
+    const std::string name = o.string("sd_solver", "auto");
+    if (name != "auto" && name != "lu" && name != "blocks")
+        o.error("sd_solver", "must be \"auto\", \"lu\" or \"blocks\"");
+    return parse_saddle_solver(name);
+}
+
 int l_step(lua_State* L) {
     ClusterHandle& h = self(L);
     ChangeGuard change(L, h, "step");
@@ -296,12 +304,14 @@ int l_step(lua_State* L) {
     const bool exact = o.boolean("exact_volumes", true);
     const long long order = o.integer("order", 1);
     if (order != 1 && order != 2) o.error("order", "must be 1 or 2");
+    const SaddleSolver sd_solver = read_sd_solver(o);
     const FixedPointOptions fp = read_fixed_point(L, o, "step: fixed_point");
     o.finish();
     return guarded(L, [&] {
         h.stepper.set_fixed_point(fp);
         h.stepper.set_exact_volumes(exact);
         h.stepper.set_order(static_cast<int>(order));
+        h.stepper.set_sd_solver(sd_solver);
         const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau, project);
         push_step_report(L, r);
         return 1;
@@ -374,6 +384,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     const long long order = o.integer("order", 1);
     if (order != 1 && order != 2) o.error("order", "must be 1 or 2");
     e.order = static_cast<int>(order);
+    e.sd_solver = read_sd_solver(o);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
     e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;
     if (o.push("on_step") != LUA_TNIL && !lua_isfunction(L, -1))
@@ -550,6 +561,10 @@ void push_step_report(lua_State* L, const StepReport& r) {
     if (r.order == 2) set_number(L, "error_estimate", r.error_estimate);
     set_integer(L, "volume_iterations", r.volume_iterations);
     if (r.volume_iterations > 0) set_number(L, "volume_error", r.volume_error);
+    if (r.flow == Flow::SurfaceDiffusion) {
+        lua_pushstring(L, r.saddle_blocks ? "blocks" : "lu");
+        lua_setfield(L, -2, "sd_solver");
+    }
 }
 
 void register_cluster_type(lua_State* L) {

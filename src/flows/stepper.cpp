@@ -28,7 +28,8 @@ TimeStepper::TimeStepper() = default;
 TimeStepper::~TimeStepper() = default;
 
 TimeStepper::TimeStepper(const TimeStepper& o)
-    : fixed_point_(o.fixed_point_), exact_volumes_(o.exact_volumes_), order_(o.order_),
+    : fixed_point_(o.fixed_point_), exact_volumes_(o.exact_volumes_), sd_solver_(o.sd_solver_),
+      order_(o.order_),
       previous_(o.previous_), mcf_(o.mcf_ ? std::make_unique<MeanCurvatureScheme>(*o.mcf_) : nullptr),
       sd_(o.sd_ ? std::make_unique<SurfaceDiffusionScheme>(*o.sd_) : nullptr) {}
 
@@ -100,6 +101,7 @@ Scheme& TimeStepper::scheme(Flow flow) {
     }
     if (!sd_) sd_ = std::make_unique<SurfaceDiffusionScheme>(exact_volumes_);
     sd_->set_exact_volumes(exact_volumes_);
+    sd_->set_saddle_solver(sd_solver_);
     return *sd_;
 }
 
@@ -153,6 +155,7 @@ StepReport TimeStepper::step_halving(Cluster& c, Flow flow, double tau, bool pro
     r.solve_seconds += first.solve_seconds;
     r.solver_iterations += first.solver_iterations;
     r.refactorized = r.refactorized || first.refactorized;
+    r.saddle_blocks = r.saddle_blocks || first.saddle_blocks;
     r.error_estimate = std::max(r.error_estimate, first.error_estimate);
     return r;
 }

@@ -77,6 +77,11 @@ class TimeStepper {
     /// it runs the seed's linear scheme (3.6)/(3.8), which loses O(tau^2) of volume per step.
     void set_exact_volumes(bool exact) { exact_volumes_ = exact; }
     bool exact_volumes() const { return exact_volumes_; }
+    /// How surface diffusion solves its saddle points (SaddleSolver: an LU, the block
+    /// preconditioner, or the blocks for large systems); the answer is the same to the solver's
+    /// backward error.
+    void set_sd_solver(SaddleSolver how) { sd_solver_ = how; }
+    SaddleSolver sd_solver() const { return sd_solver_; }
     /// The order in time of the steps: 1 (the seed's schemes) or 2 (BDF2, schemes/bdf2.h).
     /// An order-2 step needs the previous step: the stepper keeps its start while it steps
     /// with order 2, and the first step after any other change of the cluster (a new mesh,
@@ -105,6 +110,7 @@ class TimeStepper {
     bool continues_previous(const Cluster& c, Flow flow) const;
     FixedPointOptions fixed_point_;
     bool exact_volumes_ = true;
+    SaddleSolver sd_solver_ = SaddleSolver::Auto;
     int order_ = 1;
     Previous previous_;
     std::unique_ptr<MeanCurvatureScheme> mcf_;

@@ -150,6 +150,7 @@ class Run {
         const double tau = clipped(planned, last);
         try {
             stepper_.set_exact_volumes(o_.exact_volumes);
+            stepper_.set_sd_solver(o_.sd_solver);
             return stepper_.step(c_, o_.flow, tau, o_.project_onto_walls);
         } catch (const InvalidInput&) {
             throw;

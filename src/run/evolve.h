@@ -56,6 +56,8 @@ struct EvolveOptions {
     /// Surface diffusion holds the bodies at their target volumes exactly (the default;
     /// TimeStepper::set_exact_volumes); false runs the seed's linear scheme.
     bool exact_volumes = true;
+    /// How surface diffusion solves its saddle points (TimeStepper::set_sd_solver).
+    SaddleSolver sd_solver = SaddleSolver::Auto;
     /// The order in time of the steps, 1 or 2 (TimeStepper::set_order; the first step of
     /// order 2 is of order 1).
     int order = 1;

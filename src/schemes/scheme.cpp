@@ -39,12 +39,13 @@ const char* flow_name(Flow flow) {
 
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
                               const Eigen::VectorXd& b, double tau, StepCost& cost,
-                              double tolerance) {
+                              double tolerance, const SparseMatrix* factor_of) {
     const auto t1 = Clock::now();
     SolveStats stats;
-    Eigen::VectorXd x = solver.solve(M, b, &stats, tolerance);
+    Eigen::VectorXd x = solver.solve(M, b, &stats, tolerance, factor_of);
     cost.solver_iterations += stats.iterations;
     cost.refactorized = cost.refactorized || stats.refactorized;
+    cost.saddle_blocks = cost.saddle_blocks || stats.blocks;
     cost.solve_seconds += seconds_since(t1);
     cost.unknowns = static_cast<int>(M.rows());
     if (!x.allFinite())

@@ -48,6 +48,9 @@ struct StepCost {
     /// The order in time of the step's scheme: 2 for a BDF2 step (bdf2.h), 1 otherwise
     /// (also the first step of an order-2 run, which has no history yet).
     int order = 1;
+    /// Surface diffusion: a solve of the step used the saddle point's block preconditioner
+    /// (solvers/saddle_point.h) rather than an LU.
+    bool saddle_blocks = false;
     /// Order 2 only (0 otherwise): the shape's difference between the step and its first-order
     /// predictor, max_v |Q_v^T (X_v - X1_v)| over the cluster's size (Q_v the unit normals of
     /// the vertex's surfaces; schemes/bdf2.h shape_difference): the first-order step's local
@@ -150,7 +153,7 @@ class Scheme {
 /// backward error to reach (SparseDirectSolver::solve).
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
                               const Eigen::VectorXd& b, double tau, StepCost& cost,
-                              double tolerance = 1e-15);
+                              double tolerance = 1e-15, const SparseMatrix* factor_of = nullptr);
 
 /// X^m + T z: the positions of a solution z of a step's system.
 std::vector<Vec3> displaced(const Cluster& c, const PositionBasis& P, const Eigen::VectorXd& z);

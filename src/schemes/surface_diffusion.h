@@ -35,6 +35,8 @@ class SurfaceDiffusionScheme final : public Scheme {
     explicit SurfaceDiffusionScheme(bool exact_volumes);
     std::unique_ptr<Scheme> clone() const override;
     void set_exact_volumes(bool exact) { exact_ = exact; }
+    /// How the saddle points are solved (solvers/sparse_solvers.h SaddleSolver).
+    void set_saddle_solver(SaddleSolver how) { saddle_solver_ = how; }
     bool holds_volumes(const Cluster& c) const override { return exact_ && c.n_bodies() > 0; }
     bool iterative(const Cluster& c) const override { return c.nonlinear() || holds_volumes(c); }
     Eigen::VectorXd solve(const Cluster& c, double tau, const PositionBasis& P,
@@ -62,6 +64,7 @@ class SurfaceDiffusionScheme final : public Scheme {
     Eigen::VectorXd solve_exact_volumes(const Cluster& c, double tau, const PositionBasis& P,
                                         const FixedPointOptions& fp, StepCost& cost);
     bool exact_;
+    SaddleSolver saddle_solver_ = SaddleSolver::Auto;
     std::shared_ptr<const KappaBasis>
         Z_; ///< of the cluster's topology (immutable: shared by copies)
     // Set during a volume-exact step: the kappa rows assemble_system adds.

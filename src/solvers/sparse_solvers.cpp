@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "solvers/gmres.h"
 #include "solvers/pcg.h"
+#include "solvers/saddle_point.h"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
@@ -41,6 +42,11 @@ constexpr double kAcceptable = 1e-11;
 constexpr int kRefactorAfter = 8;
 constexpr int kLaggedIterations = 20; // a lagged factor that needs more has failed
 constexpr int kFreshIterations = 10;
+// The block preconditioner of saddle points (saddle_point.h): the GMRES budget, and how many
+// iterations more than a fresh preconditioner's a lagged one may take before it is refreshed.
+constexpr int kBlockIterations = 100;
+constexpr int kBlockSlack = 10;
+constexpr int kBlockCycle = 30;
 
 /// Process-wide settings that pay off for repeated factorisations (docs/benchmarks.md,
 /// "Solver settings"): one BLAS thread, and glibc malloc keeping freed memory instead of
@@ -80,6 +86,10 @@ struct SparseDirectSolver::Impl {
     // (UMFPACK's solves read the matrix again, so its 64-bit copy lives here).
     std::unique_ptr<UmfPackLULong> lu_long;
     SparseMatrixLong A_long;
+    // Saddle points at or above the block threshold: the block preconditioner in place of the
+    // LU (saddle_point.h); `blocks` says which of the two the last factorisation made.
+    SaddlePointPreconditioner block;
+    bool blocks = false;
 };
 
 namespace {
@@ -114,6 +124,19 @@ template <class LU> std::string umfpack_failure(const LU& lu, long n) {
 
 } // namespace
 
+SaddleSolver parse_saddle_solver(const std::string& name) {
+    if (name == "auto") return SaddleSolver::Auto;
+    if (name == "lu") return SaddleSolver::LU;
+    if (name == "blocks") return SaddleSolver::Blocks;
+    throw InvalidInput("sd_solver: unknown solver '" + name +
+                       "' (use \"auto\", \"lu\" or \"blocks\")");
+}
+
+bool prefers_blocks(SaddleSolver how, long unknowns) {
+    return how == SaddleSolver::Blocks ||
+           (how == SaddleSolver::Auto && unknowns >= SparseDirectSolver::kBlockThreshold);
+}
+
 std::shared_ptr<SparseDirectSolver::Impl> SparseDirectSolver::configured_impl() {
     auto impl = std::make_shared<Impl>();
     impl->llt.cholmod().print = 0; // failures become SolverError, not stderr noise
@@ -130,7 +153,12 @@ SparseDirectSolver::~SparseDirectSolver() = default;
 SparseDirectSolver::SparseDirectSolver(const SparseDirectSolver&) = default;
 SparseDirectSolver& SparseDirectSolver::operator=(const SparseDirectSolver&) = default;
 
-void SparseDirectSolver::factorize(const SparseMatrix& A) {
+bool SparseDirectSolver::uses_blocks(const SparseMatrix& A) const {
+    return kind_ == Factorization::LU && !blocks_failed_ && saddle_split_ > 0 &&
+           saddle_split_ < A.rows() && prefers_blocks(saddle_solver_, A.rows());
+}
+
+void SparseDirectSolver::factorize(const SparseMatrix& A, bool allow_blocks) {
     const std::string who = kind_ == Factorization::Cholesky ? "cholesky" : "lu";
     for (int k = 0; k < A.nonZeros(); ++k)
         if (!std::isfinite(A.valuePtr()[k]))
@@ -142,6 +170,14 @@ void SparseDirectSolver::factorize(const SparseMatrix& A) {
         analyzed_ = false;
     }
     factorized_ = false;
+    impl_->blocks = false;
+    if (allow_blocks && uses_blocks(A)) {
+        if (impl_->block.factorize(A, saddle_split_)) {
+            impl_->blocks = true, factorized_ = true;
+            return;
+        }
+        blocks_failed_ = true; // not positive definite here: the LU from now on
+    }
     if (kind_ == Factorization::Cholesky) {
         if (!analyzed_) impl_->llt.analyzePattern(A);
         impl_->llt.factorize(A);
@@ -188,7 +224,7 @@ void SparseDirectSolver::factorize_long(const SparseMatrix& A) {
 
 Eigen::MatrixXd SparseDirectSolver::solve_fresh(const SparseMatrix& A, const Eigen::MatrixXd& B) {
     if (A.rows() == 0) return B; // nothing to solve for (every vertex fixed); CHOLMOD would crash
-    factorize(A);
+    factorize(A, false); // the direct method: the exact factor, not a preconditioner
     Eigen::MatrixXd X = apply_factor(B);
     last_iterations_ = kRefactorAfter + 1; // a later solve() must not trust this factor blindly
     if (!X.allFinite()) throw SolverError("solve: the direct solve produced non-finite values");
@@ -197,7 +233,7 @@ Eigen::MatrixXd SparseDirectSolver::solve_fresh(const SparseMatrix& A, const Eig
 
 Eigen::MatrixXd SparseDirectSolver::solve_with_last_factor(const Eigen::MatrixXd& B) const {
     if (B.rows() == 0) return B;
-    if (!factorized_) throw SolverError("solve: no factorisation to reuse");
+    if (!factorized_ || impl_->blocks) throw SolverError("solve: no factorisation to reuse");
     Eigen::MatrixXd X = apply_factor(B);
     if (!X.allFinite()) throw SolverError("solve: the direct solve produced non-finite values");
     return X;
@@ -205,25 +241,23 @@ Eigen::MatrixXd SparseDirectSolver::solve_with_last_factor(const Eigen::MatrixXd
 
 Eigen::MatrixXd SparseDirectSolver::apply_factor(const Eigen::MatrixXd& B) const {
     if (kind_ == Factorization::Cholesky) return impl_->llt.solve(B);
+    if (impl_->blocks) {
+        Eigen::MatrixXd X(B.rows(), B.cols());
+        for (int j = 0; j < B.cols(); ++j)
+            X.col(j) = impl_->block.apply(B.col(j));
+        return X;
+    }
     if (impl_->lu_long) return impl_->lu_long->solve(B);
     return impl_->lu.solve(B);
 }
 
 Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b,
-                                          SolveStats* stats, double tolerance) {
+                                          SolveStats* stats, double tolerance,
+                                          const SparseMatrix* factor_of) {
     if (A.rows() == 0) return b; // every vertex fixed: an empty system, which CHOLMOD would not take
     SolveStats s;
     auto apply_A = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return A * v; };
     auto apply_P = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return apply_factor(v); };
-    // SPD systems (Cholesky) by conjugate gradients, the others by GMRES; both stop at the
-    // same backward error. Measured on MCF of the icosphere (41k and 164k vertices): the same
-    // iterations (3-4 a step) and the same time within the noise (+-10%), but CG keeps 4
-    // vectors where GMRES keeps 2 x 21: 1 GB at 10^6 vertices.
-    auto iterate = [&](const Eigen::VectorXd& rhs, Eigen::VectorXd& x0, double goal, int max) {
-        if (kind_ == Factorization::Cholesky)
-            return detail::pcg(apply_A, apply_P, rhs, x0, goal, max);
-        return detail::gmres(apply_A, apply_P, rhs, x0, goal, max);
-    };
     // The backward error, not the relative residual, is what a direct solve guarantees; with
     // tau = 10 the saddle point is too ill-conditioned for a small relative residual.
     const double norm_A = A.norm(); // Frobenius: bounds the 2-norm from above
@@ -232,25 +266,59 @@ Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::Ve
     };
     const double tol = std::max(tolerance, kTolerance);
     auto target = [&](const Eigen::VectorXd& x0) { return tol * (norm_A * x0.norm() + b.norm()); };
+    // SPD systems (Cholesky) by conjugate gradients, the others by GMRES; both stop at the
+    // same backward error. Measured on MCF of the icosphere (41k and 164k vertices): the same
+    // iterations (3-4 a step) and the same time within the noise (+-10%), but CG keeps 4
+    // vectors where GMRES keeps 2 x 21: 1 GB at 10^6 vertices.
+    auto iterate = [&](const Eigen::VectorXd& rhs, Eigen::VectorXd& x0, double goal, int max) {
+        if (kind_ == Factorization::Cholesky)
+            return detail::pcg(apply_A, apply_P, rhs, x0, goal, max);
+        if (!impl_->blocks) return detail::gmres(apply_A, apply_P, rhs, x0, goal, max);
+        // The blocks' first guess may be far from x, so the target (relative to |x|) is
+        // renewed at restarts, every kBlockCycle iterations or when a cycle met the target of
+        // its start but not that of its end: also 2 x kBlockCycle vectors instead of 2 x max.
+        for (int done = 0; done < max;) {
+            const int budget = std::min(kBlockCycle, max - done);
+            const int k = detail::gmres(apply_A, apply_P, rhs, x0, target(x0), budget);
+            done += k >= 0 ? k : budget;
+            if (k >= 0 && backward_error(x0) <= tol)
+                return done;
+        }
+        return -1;
+    };
+    // The block preconditioner needs more iterations than an exact factor (saddle_point.h):
+    // it is refreshed once a lagged one needs kBlockSlack more than a fresh one did.
+    const bool blocks = uses_blocks(A);
+    const int refactor_after = blocks ? fresh_iterations_ + kBlockSlack : kRefactorAfter;
+    const int lagged_max = blocks ? kBlockIterations : kLaggedIterations;
     Eigen::VectorXd x;
-    bool need_factor = !(reuse_ && factorized_ && last_iterations_ <= kRefactorAfter);
+    bool need_factor = !(reuse_ && factorized_ && last_iterations_ <= refactor_after &&
+                         impl_->blocks == blocks);
     if (!need_factor) {
         x = apply_factor(b);
-        s.iterations = iterate(b, x, target(x), kLaggedIterations);
+        s.iterations = iterate(b, x, target(x), lagged_max);
         need_factor = s.iterations < 0;
     }
     if (need_factor) {
-        factorize(A);
+        factorize(factor_of ? *factor_of : A);
         s.refactorized = true;
         x = apply_factor(b);
-        s.iterations = iterate(b, x, target(x), kFreshIterations);
+        s.iterations = iterate(b, x, target(x), impl_->blocks ? kBlockIterations : kFreshIterations);
+        if (s.iterations < 0 && impl_->blocks) { // the blocks did not do: the LU from now on
+            blocks_failed_ = true;
+            factorize(A);
+            x = apply_factor(b);
+            s.iterations = iterate(b, x, target(x), kFreshIterations);
+        }
         if (s.iterations < 0) s.iterations = kFreshIterations;
+        fresh_iterations_ = s.iterations;
         if (!x.allFinite() || !(backward_error(x) <= std::max(tol, kAcceptable)))
             throw SolverError("solve: no accurate solution even with a fresh factorisation "
                               "(the system is numerically singular)");
     }
     last_iterations_ = s.iterations;
     s.residual = backward_error(x);
+    s.blocks = impl_->blocks;
     if (stats) *stats = s;
     return x;
 }

@@ -14,6 +14,7 @@
 #include <Eigen/SparseCore>
 
 #include <memory>
+#include <string>
 
 namespace froth {
 
@@ -24,10 +25,21 @@ enum class Factorization {
     LU,       ///< any nonsingular matrix, here symmetric indefinite saddle points: UMFPACK
 };
 
+/// How saddle points are solved: an LU (UMFPACK), GMRES with the block preconditioner of two
+/// Cholesky factors (saddle_point.h), or the blocks from kBlockThreshold unknowns on (Auto).
+enum class SaddleSolver { Auto, LU, Blocks };
+
+/// "auto", "lu" or "blocks". \throw InvalidInput for anything else.
+SaddleSolver parse_saddle_solver(const std::string& name);
+
+/// Whether a saddle point of this many unknowns is to be solved with the blocks.
+bool prefers_blocks(SaddleSolver how, long unknowns);
+
 struct SolveStats {
     int iterations = 0;        ///< GMRES iterations (0: the residual was met at once)
     bool refactorized = false; ///< a new numeric factorisation was made for this solve
     double residual = 0;       ///< backward error |b - A x| / (|A|_F |x| + |b|)
+    bool blocks = false;       ///< solved with the block preconditioner of a saddle point
 };
 
 class SparseDirectSolver {
@@ -47,8 +59,10 @@ class SparseDirectSolver {
     ///        the solve does not reach the tolerance even with a fresh factorisation.
     /// A looser `tolerance` (a normwise backward error above 1e-15) is for solves whose result
     /// only needs to be close (the order-2 predictor): GMRES stops there.
+    /// `factor_of`: factorise this matrix instead of A when a factorisation is due (one near
+    /// A whose pattern stays the same from solve to solve; the iteration makes up the rest).
     Eigen::VectorXd solve(const SparseMatrix& A, const Eigen::VectorXd& b, SolveStats* stats = nullptr,
-                          double tolerance = 1e-15);
+                          double tolerance = 1e-15, const SparseMatrix* factor_of = nullptr);
     /// Factorises A afresh (the pattern's analysis is kept) and solves A X = B for all columns
     /// of B with that factor: the plain direct method, one pair of triangular solves per
     /// column, for iterations that correct their own round-off (minimize).
@@ -63,8 +77,19 @@ class SparseDirectSolver {
     /// one near it in an iteration that tolerates that). \throw SolverError if there is none.
     Eigen::MatrixXd solve_with_last_factor(const Eigen::MatrixXd& B) const;
 
+    /// LU only: the system is a saddle point [H B; B^T -C] whose first n unknowns are the
+    /// positions (saddle_point.h), solved as `how` says: with the blocks, GMRES on the block
+    /// preconditioner of two Cholesky factors instead of an LU, to the same backward error
+    /// (an LU after all if a block is not positive definite or GMRES does not converge in
+    /// kBlockIterations). n = 0: not a saddle point (an LU).
+    void set_saddle_point(int n, SaddleSolver how) { saddle_split_ = n, saddle_solver_ = how; }
+    /// SaddleSolver::Auto's switch: the blocks from this many unknowns on (docs/benchmarks.md
+    /// "Surface diffusion at scale").
+    static constexpr int kBlockThreshold = 100000;
+
   private:
-    void factorize(const SparseMatrix& A);
+    void factorize(const SparseMatrix& A, bool allow_blocks = true);
+    bool uses_blocks(const SparseMatrix& A) const;
     void factorize_long(const SparseMatrix& A);
     Eigen::MatrixXd apply_factor(const Eigen::MatrixXd& B) const;
     struct Impl;
@@ -74,6 +99,10 @@ class SparseDirectSolver {
     bool reuse_;
     bool analyzed_ = false, factorized_ = false;
     int last_iterations_ = 0;
+    int fresh_iterations_ = 0; ///< what the last fresh factorisation's solve took
+    int saddle_split_ = 0;
+    SaddleSolver saddle_solver_ = SaddleSolver::Auto;
+    bool blocks_failed_ = false;
 };
 
 } // namespace froth

@@ -104,5 +104,81 @@ TEST(Solvers, LuWithLongIndicesMatchesTheIntVersion) {
     EXPECT_LT((X.col(0) - Eigen::MatrixXd(A).fullPivLu().solve(b)).norm() / X.norm(), 1e-11);
 }
 
+
+/// The saddle point [H B; B^T -C] of a 1D model of surface diffusion on n P1 nodes of [0, 1]
+/// (spacing h = 1/n): H the Neumann stiffness (positive semidefinite, constants in its kernel),
+/// B the lumped mass h I, C tau times the stiffness; nonsingular (I + tau H C / h^2 is).
+/// `flip` negates H.
+SparseMatrix model_saddle_point(int n, double tau, bool flip = false) {
+    std::vector<Eigen::Triplet<double>> t;
+    const double h = 1.0 / n, a = (flip ? -1.0 : 1.0) / h, c = tau / h;
+    for (int i = 0; i < n; ++i) {
+        const double d = (i == 0 || i == n - 1) ? 1.0 : 2.0;
+        t.emplace_back(i, i, a * d), t.emplace_back(n + i, n + i, -c * d);
+        t.emplace_back(i, n + i, h), t.emplace_back(n + i, i, h);
+        if (i > 0) {
+            t.emplace_back(i, i - 1, -a), t.emplace_back(i - 1, i, -a);
+            t.emplace_back(n + i, n + i - 1, c), t.emplace_back(n + i - 1, n + i, c);
+        }
+    }
+    SparseMatrix K(2 * n, 2 * n);
+    K.setFromTriplets(t.begin(), t.end());
+    return K;
+}
+
+// The blocks (saddle_point.h) give the LU's answers, lagged across steps too, for tau from
+// 1e-6 to 10 (the backward error is 1e-15 for both; the condition number scales the rest).
+TEST(Solvers, BlocksSolveSaddlePointsAsTheLuDoes) {
+    const int n = 300;
+    SparseDirectSolver blocks(Factorization::LU), lu(Factorization::LU);
+    blocks.set_saddle_point(n, SaddleSolver::Blocks);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(2 * n, -1.0, 2.0).array().sin();
+    for (double tau : {1e-6, 1e-3, 1.1e-3, 1.0, 10.0}) {
+        const SparseMatrix K = model_saddle_point(n, tau);
+        SolveStats s;
+        const Eigen::VectorXd x = blocks.solve(K, b, &s), y = lu.solve(K, b);
+        EXPECT_TRUE(s.blocks) << "tau " << tau;
+        EXPECT_LE(s.residual, 1e-15) << "tau " << tau;
+        EXPECT_LT((x - y).norm() / y.norm(), 1e-7) << "tau " << tau; // cond(K) up to ~1e8
+    }
+}
+
+// The preconditioner's quality does not depend on the size: 16x the unknowns (the model's
+// lower frequencies) takes about the iterations of the smallest.
+TEST(Solvers, BlockIterationsDoNotGrowWithTheSize) {
+    auto iterations = [](int n, double tau) {
+        SparseDirectSolver blocks(Factorization::LU);
+        blocks.set_saddle_point(n, SaddleSolver::Blocks);
+        SolveStats s;
+        const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(2 * n, 0.0, 40.0).array().sin();
+        blocks.solve(model_saddle_point(n, tau), b, &s);
+        return s.iterations;
+    };
+    for (double tau : {1e-4, 1e-2, 1.0}) {
+        const int coarse = iterations(100, tau), fine = iterations(1600, tau);
+        EXPECT_LE(fine, coarse + 4) << "tau " << tau << ": " << coarse << " -> " << fine;
+        EXPECT_LE(std::max(coarse, fine), 20) << "tau " << tau; // sigma = 1 needs 59 at 1e-4
+    }
+}
+
+// Auto is the LU below kBlockThreshold unknowns; blocks that are not positive definite (here
+// H negated) leave the system to the LU, with its answer.
+TEST(Solvers, BlocksGiveWayToTheLu) {
+    const int n = 50;
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(2 * n, 0.0, 1.0);
+    SparseDirectSolver automatic(Factorization::LU);
+    automatic.set_saddle_point(n, SaddleSolver::Auto);
+    SolveStats s;
+    automatic.solve(model_saddle_point(n, 1e-3), b, &s);
+    EXPECT_FALSE(s.blocks);
+    SparseDirectSolver blocks(Factorization::LU);
+    blocks.set_saddle_point(n, SaddleSolver::Blocks);
+    const SparseMatrix K = model_saddle_point(n, 1e-3, true);
+    const Eigen::VectorXd x = blocks.solve(K, b, &s);
+    EXPECT_FALSE(s.blocks);
+    EXPECT_LT((x - Eigen::MatrixXd(K).fullPivLu().solve(b)).norm() / x.norm(), 1e-11);
+    EXPECT_THROW(parse_saddle_solver("cg"), InvalidInput);
+}
+
 } // namespace
 } // namespace froth
