@@ -39,10 +39,10 @@ const char* flow_name(Flow flow) {
 
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
                               const Eigen::VectorXd& b, double tau, StepCost& cost,
-                              double tolerance, const SparseMatrix* factor_of) {
+                              double tolerance) {
     const auto t1 = Clock::now();
     SolveStats stats;
-    Eigen::VectorXd x = solver.solve(M, b, &stats, tolerance, factor_of);
+    Eigen::VectorXd x = solver.solve(M, b, &stats, tolerance);
     cost.solver_iterations += stats.iterations;
     cost.refactorized = cost.refactorized || stats.refactorized;
     cost.saddle_blocks = cost.saddle_blocks || stats.blocks;

@@ -153,7 +153,7 @@ class Scheme {
 /// backward error to reach (SparseDirectSolver::solve).
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
                               const Eigen::VectorXd& b, double tau, StepCost& cost,
-                              double tolerance = 1e-15, const SparseMatrix* factor_of = nullptr);
+                              double tolerance = 1e-15);
 
 /// X^m + T z: the positions of a solution z of a step's system.
 std::vector<Vec3> displaced(const Cluster& c, const PositionBasis& P, const Eigen::VectorXd& z);

@@ -62,10 +62,9 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, do
         for (int v = 0; v < n; ++v)
             dX[v] = P.displacement(z_last, v);
     }
-    // With the block preconditioner every solve, the first too, is on one solver, with blocks
-    // made from M(w) (C's pattern would make the Cholesky factors denser): two solvers would
-    // hold two pairs of factors, twice the memory at the sizes the blocks are for (3.9
-    // against 1.6 GB at 164k vertices).
+    // With the block preconditioner every solve, the first too (with C = 0), is one of J on
+    // one solver: two solvers would hold two pairs of Cholesky factors (3.9 against 3.1 GB at
+    // 164k vertices).
     if (!Z_) Z_ = std::make_shared<const KappaBasis>(kappa_basis(c));
     const bool one_solver = prefers_blocks(saddle_solver_, P.size() + Z_->n_reduced);
     Anderson anderson(6); // r > 1 only, where Newton's method on (3.9) runs inside each solve
@@ -88,17 +87,19 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_exact_volumes(const Cluster& c, do
             z = solve_newton(c, tau, P, fp, report);
         } else if (z_last.size() == 0 && !one_solver) {
             z = solve_once(c, tau, P, nullptr, report);
-        } else if (z_last.size() == 0) {
-            assemble(c, tau, P, nullptr, report);
-            z = solve_checked(exact_solver_, matrix_.finish(), rhs_, tau, report);
         } else { // (M(w) + C) z = rhs + C z_last: the fixed point of M(w(dX)) z = rhs
             assemble(c, tau, P, nullptr, report);
-            assemble_weight_derivative(c, P, dX, pair_kappa(*Z_, z_last, P.size()),
-                                       static_cast<int>(z_last.size()), volume_jacobian_);
+            const Eigen::VectorXd z_prev =
+                z_last.size() > 0 ? z_last : Eigen::VectorXd::Zero(rhs_.size());
+            assemble_weight_derivative(c, P, dX, pair_kappa(*Z_, z_prev, P.size()),
+                                       static_cast<int>(z_prev.size()), volume_jacobian_);
             const SparseMatrix& C = volume_jacobian_.finish();
             const SparseMatrix J = matrix_.finish() + C;
-            z = solve_checked(exact_solver_, J, rhs_ + C * z_last, tau, report, 1e-15,
-                              one_solver ? &matrix_.finish() : nullptr);
+            z = solve_checked(exact_solver_, J, rhs_ + C * z_prev, tau, report);
+            // C = 0 in a first solve (J's pattern, zero values); the next J has C at kappa,
+            // which blocks made without it serve poorly (measured at 164k vertices: 21 GMRES
+            // iterations a step against 12, 1.6x the step's time).
+            if (z_last.size() == 0) exact_solver_.refresh_next();
         }
         ++report.volume_iterations;
         const std::vector<Vec3> X = displaced(c, P, z);

@@ -252,8 +252,7 @@ Eigen::MatrixXd SparseDirectSolver::apply_factor(const Eigen::MatrixXd& B) const
 }
 
 Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::VectorXd& b,
-                                          SolveStats* stats, double tolerance,
-                                          const SparseMatrix* factor_of) {
+                                          SolveStats* stats, double tolerance) {
     if (A.rows() == 0) return b; // every vertex fixed: an empty system, which CHOLMOD would not take
     SolveStats s;
     auto apply_A = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return A * v; };
@@ -300,7 +299,7 @@ Eigen::VectorXd SparseDirectSolver::solve(const SparseMatrix& A, const Eigen::Ve
         need_factor = s.iterations < 0;
     }
     if (need_factor) {
-        factorize(factor_of ? *factor_of : A);
+        factorize(A);
         s.refactorized = true;
         x = apply_factor(b);
         s.iterations = iterate(b, x, target(x), impl_->blocks ? kBlockIterations : kFreshIterations);
