@@ -23,8 +23,8 @@ Eigen::Matrix3d local_stiffness(const Vec3& x0, const Vec3& x1, const Vec3& x2) 
 FacetNormals facet_normals(const Cluster& c, const std::vector<Vec3>& X) {
     FacetNormals nu(c.n_surfaces());
     for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles)
-            nu[i].push_back(area_vector2(X, t).normalized());
+        for (std::size_t f = 0; f < c.surface(i).triangles.size(); ++f)
+            nu[i].push_back(area_vector2(c.surface(i).corners(X, f)).normalized());
     return nu;
 }
 

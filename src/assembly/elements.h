@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace froth {
@@ -63,17 +64,33 @@ inline double isotropic_weight(const Surface& s) {
     return s.gamma ? s.sigma * std::sqrt(s.gamma->G(0)(0, 0)) : s.sigma;
 }
 
+/// g(t, M) or, if it takes them, g(t, M, shifts): the facet's corner shifts (all zero outside
+/// a periodic cluster).
+template <class G, class M> void call_element(G& g, const Surface& s, std::size_t f, const M& m) {
+    if constexpr (std::is_invocable_v<G&, const Tri&, const M&, const std::array<Vec3, 3>&>) {
+        static const std::array<Vec3, 3> none = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+        g(s.triangles[f], m, s.shifts.empty() ? none : s.shifts[f]);
+    } else {
+        g(s.triangles[f], m);
+    }
+}
+
 /// Calls f(surface, triangle, K) with the scalar P1 stiffness of every facet.
 template <class F> void for_each_facet(const Cluster& c, F&& f) {
     const auto& X = c.positions();
-    for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles)
-            f(i, t, local_stiffness(X[t[0]], X[t[1]], X[t[2]]));
+    for (int i = 0; i < c.n_surfaces(); ++i) {
+        const Surface& s = c.surface(i);
+        for (std::size_t k = 0; k < s.triangles.size(); ++k) {
+            const auto x = s.corners(X, k);
+            f(i, s.triangles[k], local_stiffness(x[0], x[1], x[2]));
+        }
+    }
 }
 
 /// The stiffness of every facet: iso(t, w K) on isotropic surfaces (w K times I_3), and
 /// aniso(t, M) with M the sigma-scaled 9x9 element matrix of (3.9) on the others, its r > 1
-/// weights taken at the lagged normals.
+/// weights taken at the lagged normals. Both may take a third argument, the facet's corner
+/// shifts (zero but in a periodic cluster, Surface::shifts), for what they apply to positions.
 template <class Iso, class Aniso>
 void for_each_element(const Cluster& c, const FacetNormals* lagged, Iso&& iso, Aniso&& aniso) {
     const auto& X = c.positions();
@@ -81,16 +98,17 @@ void for_each_element(const Cluster& c, const FacetNormals* lagged, Iso&& iso, A
         const Surface& s = c.surface(i);
         if (s.isotropic()) {
             const double w = isotropic_weight(s);
-            for (const Tri& t : s.triangles)
-                iso(t, w * local_stiffness(X[t[0]], X[t[1]], X[t[2]]));
+            for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+                const auto x = s.corners(X, f);
+                call_element(iso, s, f, w * local_stiffness(x[0], x[1], x[2]));
+            }
             continue;
         }
         const bool lag = s.gamma->r() != 1.0 && lagged && !(*lagged)[i].empty();
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-            const Tri& t = s.triangles[f];
-            const std::array<Vec3, 3> x = {X[t[0]], X[t[1]], X[t[2]]};
-            const Vec3 nu = lag ? (*lagged)[i][f] : area_vector2(X, t).normalized();
-            aniso(t, s.sigma * element_matrix(*s.gamma, x, nu));
+            const std::array<Vec3, 3> x = s.corners(X, f);
+            const Vec3 nu = lag ? (*lagged)[i][f] : area_vector2(x).normalized();
+            call_element(aniso, s, f, s.sigma * element_matrix(*s.gamma, x, nu));
         }
     }
 }

@@ -7,11 +7,12 @@
 namespace froth {
 namespace {
 
-/// chi_bk: the sign (+1 outward, -1 inward, 0 absent) of pair k's surface in body b.
+/// chi_bk: the sign (+1 outward, -1 inward, 0 absent, or in a periodic cell on both sides) of
+/// pair k's surface in body b.
 std::vector<std::vector<int>> body_surface_signs(const Cluster& c) {
     std::vector<std::vector<int>> sign(c.n_bodies(), std::vector<int>(c.n_surfaces(), 0));
     for (int b = 0; b < c.n_bodies(); ++b)
-        for (const BodyFace& f : c.bodies()[b].faces) sign[b][f.surface] = f.sign;
+        for (const BodyFace& f : c.bodies()[b].faces) sign[b][f.surface] += f.sign; // 0: both sides
     return sign;
 }
 
@@ -21,8 +22,10 @@ std::vector<Vec3> simpson_pair_weights(const Cluster& c, const std::vector<Vec3>
     const auto& X = c.positions();
     std::vector<Vec3> w(c.n_pairs(), Vec3::Zero());
     for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles) {
-            const Vec3 e1 = X[t[1]] - X[t[0]], e2 = X[t[2]] - X[t[0]];
+        for (std::size_t f = 0; f < c.surface(i).triangles.size(); ++f) {
+            const Tri& t = c.surface(i).triangles[f];
+            const auto x = c.surface(i).corners(X, f);
+            const Vec3 e1 = x[1] - x[0], e2 = x[2] - x[0];
             const Vec3 d1 = dX[t[1]] - dX[t[0]], d2 = dX[t[2]] - dX[t[0]];
             const Vec3 mean = e1.cross(e2) + (e1.cross(d2) + d1.cross(e2)) / 2 + d1.cross(d2) / 3;
             for (int v : t) w[c.pair_index(v, i)] += mean / 6;
@@ -67,9 +70,11 @@ void assemble_weight_derivative(const Cluster& c, const PositionBasis& P,
     M.begin(size, size);
     const auto& X = c.positions();
     for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles) {
-            const Vec3 u1 = (X[t[1]] - X[t[0]]) / 2 + (dX[t[1]] - dX[t[0]]) / 3;
-            const Vec3 u2 = (X[t[2]] - X[t[0]]) / 2 + (dX[t[2]] - dX[t[0]]) / 3;
+        for (std::size_t f = 0; f < c.surface(i).triangles.size(); ++f) {
+            const Tri& t = c.surface(i).triangles[f];
+            const auto x = c.surface(i).corners(X, f);
+            const Vec3 u1 = (x[1] - x[0]) / 2 + (dX[t[1]] - dX[t[0]]) / 3;
+            const Vec3 u2 = (x[2] - x[0]) / 2 + (dX[t[2]] - dX[t[0]]) / 3;
             const Eigen::Matrix3d D[3] = {cross_matrix(u2 - u1), -cross_matrix(u2), cross_matrix(u1)};
             for (int a = 0; a < 3; ++a) {
                 const double k = kappa[c.pair_index(t[a], i)] / 6;

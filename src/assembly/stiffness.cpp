@@ -29,15 +29,15 @@ Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
     Eigen::VectorXd y = Eigen::VectorXd::Zero(3 * c.n_vertices());
     for_each_element(
         c, lagged,
-        [&](const Tri& t, const Eigen::Matrix3d& K) {
+        [&](const Tri& t, const Eigen::Matrix3d& K, const std::array<Vec3, 3>& shift) {
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b)
-                    y.segment<3>(3 * t[a]) += K(a, b) * X[t[b]];
+                    y.segment<3>(3 * t[a]) += K(a, b) * (X[t[b]] + shift[b]);
         },
-        [&](const Tri& t, const ElementMatrix& E) {
+        [&](const Tri& t, const ElementMatrix& E, const std::array<Vec3, 3>& shift) {
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b)
-                    y.segment<3>(3 * t[a]) += E.block<3, 3>(3 * a, 3 * b) * X[t[b]];
+                    y.segment<3>(3 * t[a]) += E.block<3, 3>(3 * a, 3 * b) * (X[t[b]] + shift[b]);
         });
     return y;
 }
@@ -49,10 +49,10 @@ void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const st
     for (int i = 0; i < c.n_surfaces(); ++i) {
         const Surface& s = c.surface(i);
         if (s.isotropic() || s.gamma->r() == 1.0) continue;
-        for (const Tri& t : s.triangles) {
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const Tri& t = s.triangles[f];
             const ElementMatrix C =
-                s.sigma * weight_jacobian(*s.gamma, {Xm[t[0]], Xm[t[1]], Xm[t[2]]},
-                                          {X[t[0]], X[t[1]], X[t[2]]});
+                s.sigma * weight_jacobian(*s.gamma, s.corners(Xm, f), s.corners(X, f));
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b)
                     P.add_block(M, t[a], t[b], C.block<3, 3>(3 * a, 3 * b));
@@ -67,8 +67,10 @@ void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal
     const auto& X = c.positions();
     for (const Surface& s : c.surfaces()) {
         const double w = isotropic_weight(s);
-        for (const Tri& t : s.triangles) {
-            const Eigen::Matrix3d K = w * local_stiffness(X[t[0]], X[t[1]], X[t[2]]);
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const Tri& t = s.triangles[f];
+            const auto x = s.corners(X, f);
+            const Eigen::Matrix3d K = w * local_stiffness(x[0], x[1], x[2]);
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b)
                     M.add(t[a], t[b], K(a, b));

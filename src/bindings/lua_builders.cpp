@@ -3,6 +3,8 @@
 // clusters of lua/froth/clusters.lua (froth.torus_bubble, ...) built on froth.fragment.
 #include "bindings/lua_builders.h"
 
+#include "bindings/lua_foams.h"
+
 #include "bindings/lua_cluster.h"
 #include "bindings/lua_queries.h"
 #include "bindings/lua_walls.h"
@@ -177,7 +179,8 @@ int l_cluster(lua_State* L) {
                 const int s = id_at(L, lua_gettop(L), k, path);
                 if (s < 0)
                     luaL_error(L, "cluster: %s[%d] must be a positive surface id (froth finds "
-                                  "the orientation itself)", path.c_str(), k);
+                                  "the orientation itself; in a periodic cluster a film with "
+                                  "the body on both sides is named twice)", path.c_str(), k);
                 ids.push_back(s);
             }
             spec.bodies.push_back(std::move(ids));
@@ -193,8 +196,13 @@ int l_cluster(lua_State* L) {
     lua_pop(L, 1);
     if (o.push("curves") != LUA_TNIL) read_curves(L, lua_gettop(L), spec);
     lua_pop(L, 1);
+    std::optional<Eigen::Matrix3d> period;
+    if (o.push("period") != LUA_TNIL) period = read_period(L, -1, "cluster");
+    lua_pop(L, 1);
     o.finish();
     return guarded(L, [&] {
+        // Unwrapped vertices: lattice images become one vertex, corners get their offsets.
+        if (period) identify_periodic_images(spec, *period);
         push_cluster(L, std::move(spec));
         return 1;
     });
@@ -309,7 +317,7 @@ int l_sphere(lua_State* L) {
         TriangleSurface ico = icosphere(static_cast<int>(levels));
         ClusterSpec spec;
         for (const Vec3& x : ico.vertices) spec.vertices.push_back(s.center + s.R * x);
-        spec.surfaces.push_back({std::move(ico.triangles), 1.0});
+        spec.surfaces.push_back({std::move(ico.triangles), 1.0, {}});
         spec.bodies = {{0}};
         push_cluster(L, std::move(spec));
         return 1;
@@ -625,7 +633,8 @@ void add_named_clusters(lua_State* L, int froth, const char* module) {
 
 void add_builders(lua_State* L) {
     luaL_setfuncs(L, functions, 0);
-    add_named_clusters(L, lua_gettop(L), "froth.structured_clusters"); // no gmsh needed
+    for (const char* module : {"froth.structured_clusters", "froth.foams"}) // no gmsh needed
+        add_named_clusters(L, lua_gettop(L), module);
 #ifdef FROTH_HAVE_GMSH
     for (const char* module : {"froth.clusters", "froth.wall_clusters"})
         add_named_clusters(L, lua_gettop(L), module);

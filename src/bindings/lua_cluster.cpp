@@ -214,6 +214,22 @@ int l_vertex(lua_State* L) {
     return 1;
 }
 
+// c:period() -> {a, b, c} (the period vectors) or nil for a cluster that is not periodic
+int l_period(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    if (!c.periodic()) {
+        lua_pushnil(L);
+        return 1;
+    }
+    lua_createtable(L, 3, 0);
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 a = c.period().col(k);
+        push_numbers(L, std::vector<double>{a[0], a[1], a[2]});
+        lua_rawseti(L, -2, k + 1);
+    }
+    return 1;
+}
+
 int l_triple_lines(lua_State* L) {
     const Cluster& c = self(L).cluster;
     lua_createtable(L, static_cast<int>(c.triple_lines().size()), 0);
@@ -488,6 +504,7 @@ const luaL_Reg methods[] = {
     {"mobility", l_mobility}, {"set_mobility", l_set_mobility},
     {"ellipsoid_distance", l_ellipsoid_distance},
     {"time", l_time},         {"vertex", l_vertex},
+    {"period", l_period},
     {"triple_lines", l_triple_lines}, {"quadruple_points", l_quadruple_points},
     {"bodies", l_bodies},     {"report", l_report},
     {"walls", l_walls},

@@ -5,6 +5,7 @@
 #include "bindings/lua_cluster.h"
 #include "bindings/lua_state.h"
 #include "bindings/lua_walls.h"
+#include "bindings/lua_foams.h"
 #include "bindings/lua_wulff.h"
 
 #include "bindings/paths.h"
@@ -76,6 +77,7 @@ void open_froth(lua_State* L) {
     add_builders(L);
     add_wall_constructors(L);
     add_wulff_functions(L);
+    add_foam_functions(L);
     add_anisotropy_constructors(L);
     add_state_functions(L);
     lua_pushstring(L, FROTH_VERSION);

@@ -36,9 +36,11 @@ std::vector<FacetCrossing> find_self_intersections(const Cluster& c, int max_pai
     for (int i = 0; i < c.n_surfaces(); ++i) {
         const auto& tris = c.surface(i).triangles;
         for (int f = 0; f < static_cast<int>(tris.size()); ++f) {
-            const Tri& t = tris[f];
-            auto point = [&](int v) { return Point(X[v][0], X[v][1], X[v][2]); };
-            soup.push_back({{i, f}, t, Triangle(point(t[0]), point(t[1]), point(t[2]))});
+            // Each facet where its corners put it: in a periodic cluster only facets that meet
+            // in the same copy of the box are found (a crossing through the box's faces is not).
+            const auto x = c.surface(i).corners(X, f);
+            auto point = [&](int a) { return Point(x[a][0], x[a][1], x[a][2]); };
+            soup.push_back({{i, f}, tris[f], Triangle(point(0), point(1), point(2))});
         }
     }
     std::vector<Box> boxes;

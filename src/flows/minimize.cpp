@@ -29,6 +29,7 @@ struct Variation {
     Eigen::MatrixXd grad_volume; ///< T^T G, one column per body
     Eigen::VectorXd weight;      ///< 1 / m_v on the rows of vertex v
     double area = 0, energy = 0;
+    int bodies = 0; ///< all bodies (grad_volume may leave out the last: Cluster::fills_box)
 };
 
 /// y_v projected onto the span of T_v^T omega_iv over the surfaces i at v: the film normal at
@@ -60,8 +61,11 @@ Variation first_variation(const Cluster& c, const PositionBasis& P, const PairGe
     d.grad_energy = d.grad_energy_full;
     project_normal(c, P, g, d.grad_energy);
     const Eigen::MatrixXd G = body_volume_gradients(c);
-    d.grad_volume.resize(P.size(), c.n_bodies());
-    for (int b = 0; b < c.n_bodies(); ++b) d.grad_volume.col(b) = P.restrict(G.col(b));
+    // Cells that fill a periodic box: the last volume is the box's less the others (its
+    // gradient is minus their sum), so it is no constraint of its own and gets pressure 0.
+    d.grad_volume.resize(P.size(), c.n_volume_constraints());
+    for (int b = 0; b < c.n_volume_constraints(); ++b) d.grad_volume.col(b) = P.restrict(G.col(b));
+    d.bodies = c.n_bodies();
     d.weight.resize(P.size());
     for (int v = 0; v < c.n_vertices(); ++v) {
         double m = 0;
@@ -79,6 +83,7 @@ EquilibriumState balance(const Variation& d) {
     const Eigen::VectorXd p = (d.grad_volume.transpose() * WB).ldlt().solve(WB.transpose() * d.grad_energy);
     const Eigen::VectorXd r = d.grad_energy - d.grad_volume * p;
     s.pressures.assign(p.data(), p.data() + p.size());
+    s.pressures.resize(d.bodies, 0.0); // the gauge of a box filled with cells
     const double R = std::sqrt(d.area / (4 * M_PI)), sigma = d.energy / d.area;
     s.residual = std::sqrt(r.dot(d.weight.asDiagonal() * r) / d.area) * R / sigma;
     return s;
@@ -278,8 +283,8 @@ class Minimizer {
             steps_on_factor_ = 0, has_factor_ = true;
         }
         ++steps_on_factor_;
-        Eigen::VectorXd dV(c_.n_bodies());
-        for (int b = 0; b < c_.n_bodies(); ++b) dV[b] = c_.target_volumes()[b] - V[b];
+        Eigen::VectorXd dV(c_.n_volume_constraints());
+        for (int b = 0; b < c_.n_volume_constraints(); ++b) dV[b] = c_.target_volumes()[b] - V[b];
         Eigen::VectorXd p;
         const Eigen::VectorXd y = constrained_step(system_, fresh, d, dV, p);
         std::vector<Vec3> X = c_.positions();
@@ -291,7 +296,7 @@ class Minimizer {
         const auto merit = [&](const std::vector<Vec3>& Y) {
             const std::vector<double> W = body_volumes(c_, Y);
             double m = energy_at(Y);
-            for (int b = 0; b < c_.n_bodies(); ++b) m -= p[b] * (W[b] - c_.target_volumes()[b]);
+            for (int b = 0; b < p.size(); ++b) m -= p[b] * (W[b] - c_.target_volumes()[b]);
             return m;
         };
         const double bound = merit(c_.positions()) + 1e-12 * std::abs(d.energy);
@@ -320,7 +325,7 @@ class Minimizer {
     /// its target volume to round-off: a few Newton steps on the n_bodies equations, the
     /// projection that keeps Anderson's mixed iterates (and every other) volume exact.
     void restore_volumes(const PositionBasis& P, const Variation& d, std::vector<Vec3>& X) const {
-        const int nb = c_.n_bodies();
+        const int nb = c_.n_volume_constraints();
         for (int it = 0; it < 12 && nb > 0; ++it) {
             const std::vector<double> V = body_volumes(c_, X);
             Eigen::VectorXd dV(nb);
@@ -344,9 +349,10 @@ class Minimizer {
     double min_facet_angle(const std::vector<Vec3>& X) const {
         double best_cot = -std::numeric_limits<double>::infinity(), sine = 0, cosine = -1;
         for (const Surface& s : c_.surfaces())
-            for (const Tri& t : s.triangles)
+            for (std::size_t f = 0; f < s.triangles.size(); ++f)
                 for (int k = 0; k < 3; ++k) {
-                    const Vec3 u = X[t[(k + 1) % 3]] - X[t[k]], w = X[t[(k + 2) % 3]] - X[t[k]];
+                    const auto x = s.corners(X, f);
+                    const Vec3 u = x[(k + 1) % 3] - x[k], w = x[(k + 2) % 3] - x[k];
                     const double sn = u.cross(w).norm(), cs = u.dot(w);
                     // a degenerate corner (sn = 0) counts as 0 degrees unless it is a flat 180
                     const double cot = sn > 0 ? cs / sn
@@ -361,7 +367,8 @@ class Minimizer {
     double energy_at(const std::vector<Vec3>& X) const {
         double e = 0;
         for (const Surface& s : c_.surfaces())
-            for (const Tri& t : s.triangles) e += 0.5 * s.density(area_vector2(X, t));
+            for (std::size_t f = 0; f < s.triangles.size(); ++f)
+                e += 0.5 * s.density(area_vector2(s.corners(X, f)));
         return e;
     }
 
@@ -393,6 +400,7 @@ EquilibriumState equilibrium_state(const Cluster& c) {
 
 MinimizeResult minimize(Cluster& c, const MinimizeOptions& options) {
     check(options);
+    check_filled_box_targets(c, "minimize");
     if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
         throw GeometryError("minimize: " + facet_name(s, f) + " has zero area");
     const std::vector<Vec3> X0 = c.positions();

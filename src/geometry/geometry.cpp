@@ -8,12 +8,11 @@ namespace froth {
 
 std::pair<int, int> find_degenerate_facet(const Cluster& c, const std::vector<Vec3>& X) {
     for (int i = 0; i < c.n_surfaces(); ++i) {
-        const auto& tris = c.surface(i).triangles;
-        for (int f = 0; f < static_cast<int>(tris.size()); ++f) {
-            const Tri& t = tris[f];
-            const double scale = (X[t[1]] - X[t[0]]).squaredNorm() +
-                                 (X[t[2]] - X[t[0]]).squaredNorm();
-            if (!(area_vector2(X, t).norm() > 1e-12 * scale)) return {i, f};
+        const Surface& s = c.surface(i);
+        for (int f = 0; f < static_cast<int>(s.triangles.size()); ++f) {
+            const auto x = s.corners(X, f);
+            const double scale = (x[1] - x[0]).squaredNorm() + (x[2] - x[0]).squaredNorm();
+            if (!(area_vector2(x).norm() > 1e-12 * scale)) return {i, f};
         }
     }
     return {-1, -1};
@@ -34,8 +33,8 @@ void project_onto_walls_of(const Cluster& c, std::vector<Vec3>& X) {
 std::vector<double> surface_areas(const Cluster& c) {
     std::vector<double> areas(c.n_surfaces(), 0.0);
     for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles)
-            areas[i] += 0.5 * area_vector2(c.positions(), t).norm();
+        for (std::size_t f = 0; f < c.surface(i).triangles.size(); ++f)
+            areas[i] += 0.5 * area_vector2(c.surface(i).corners(c.positions(), f)).norm();
     return areas;
 }
 
@@ -43,7 +42,8 @@ double energy(const Cluster& c) {
     // E_gamma = sum_i sum_sigma sigma_i gamma_i(nu_sigma) |sigma|, with gamma 1-homogeneous.
     double e = 0;
     for (const Surface& s : c.surfaces())
-        for (const Tri& t : s.triangles) e += 0.5 * s.density(area_vector2(c.positions(), t));
+        for (std::size_t f = 0; f < s.triangles.size(); ++f)
+            e += 0.5 * s.density(area_vector2(s.corners(c.positions(), f)));
     return e;
 }
 
@@ -83,7 +83,7 @@ void add_mobilities(const Cluster& c, PairGeometry& g) {
         const std::string where = "surface " + std::to_string(i + 1);
         g.facet_beta[i].resize(s.triangles.size());
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-            const Vec3 a2 = area_vector2(c.positions(), s.triangles[f]);
+            const Vec3 a2 = area_vector2(s.corners(c.positions(), f));
             const double beta = s.beta(a2.normalized(), s.sigma, s.gamma.get(), where);
             g.facet_beta[i][f] = beta;
             for (int v : s.triangles[f]) g.mass_beta[c.pair_index(v, i)] += beta * a2.norm() / 6;
@@ -98,8 +98,9 @@ PairGeometry pair_geometry(const Cluster& c) {
     g.mass.assign(c.n_pairs(), 0.0);
     g.omega.assign(c.n_pairs(), Vec3::Zero());
     for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles) {
-            const Vec3 a2 = area_vector2(c.positions(), t); // 2 |sigma| nu_sigma
+        for (std::size_t f = 0; f < c.surface(i).triangles.size(); ++f) {
+            const Tri& t = c.surface(i).triangles[f];
+            const Vec3 a2 = area_vector2(c.surface(i).corners(c.positions(), f)); // 2 |sigma| nu
             const double area = 0.5 * a2.norm();
             for (int v : t) {
                 const int k = c.pair_index(v, i);
@@ -118,11 +119,12 @@ MeshQuality mesh_quality(const Cluster& c) {
     q.min_angle = 180;
     q.min_area = INFINITY;
     for (const Surface& s : c.surfaces())
-        for (const Tri& t : s.triangles) {
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const auto x = s.corners(X, f);
             double len[3];
             for (int k = 0; k < 3; ++k) {
-                const Vec3 u = X[t[(k + 1) % 3]] - X[t[k]];
-                const Vec3 w = X[t[(k + 2) % 3]] - X[t[k]];
+                const Vec3 u = x[(k + 1) % 3] - x[k];
+                const Vec3 w = x[(k + 2) % 3] - x[k];
                 const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
                 q.min_angle = std::min(q.min_angle, angle);
                 q.max_angle = std::max(q.max_angle, angle);
@@ -130,7 +132,7 @@ MeshQuality mesh_quality(const Cluster& c) {
             }
             const auto [lo, hi] = std::minmax({len[0], len[1], len[2]});
             q.max_edge_ratio = std::max(q.max_edge_ratio, hi / lo);
-            q.min_area = std::min(q.min_area, 0.5 * area_vector2(X, t).norm());
+            q.min_area = std::min(q.min_area, 0.5 * area_vector2(x).norm());
         }
     return q;
 }
@@ -146,13 +148,15 @@ std::vector<double> vertex_mean_curvature(const Cluster& c) {
         for (int v : c.surface(i).vertices)
             if (owner[v] < 0) owner[v] = i;
     for (int i = 0; i < c.n_surfaces(); ++i)
-        for (const Tri& t : c.surface(i).triangles) {
-            const Vec3 a2 = area_vector2(X, t);
+        for (std::size_t f = 0; f < c.surface(i).triangles.size(); ++f) {
+            const Tri& t = c.surface(i).triangles[f];
+            const auto x = c.surface(i).corners(X, f);
+            const Vec3 a2 = area_vector2(x);
             const Vec3 nu = a2.normalized();
             for (int k = 0; k < 3; ++k) {
                 const int v = t[k];
                 if (owner[v] != i) continue;
-                grad[v] += 0.5 * nu.cross(X[t[(k + 2) % 3]] - X[t[(k + 1) % 3]]);
+                grad[v] += 0.5 * nu.cross(x[(k + 2) % 3] - x[(k + 1) % 3]);
                 normal[v] += 0.5 * a2;
                 mass[v] += a2.norm() / 6.0;
             }

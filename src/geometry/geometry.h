@@ -17,6 +17,8 @@ namespace froth {
 inline Vec3 area_vector2(const std::vector<Vec3>& X, const Tri& t) {
     return (X[t[1]] - X[t[0]]).cross(X[t[2]] - X[t[0]]);
 }
+/// The same for a facet's corners (Surface::corners: whole also across a periodic box).
+inline Vec3 area_vector2(const std::array<Vec3, 3>& x) { return (x[1] - x[0]).cross(x[2] - x[0]); }
 
 /// The first (surface, facet) whose area at positions X is not positive relative to its edges
 /// (|x1 - x0| x |x2 - x0| <= 1e-12 (|x1 - x0|^2 + |x2 - x0|^2)), or {-1, -1}.

@@ -30,20 +30,32 @@ PairFacets pair_facets(const Cluster& c) {
     return p;
 }
 
+/// The edge vector from a to its neighbour b (unwrapped in a periodic cluster).
+Vec3 edge_vector(const Cluster& c, int a, int b) {
+    return c.position(b) - c.position(a) + c.edge_shift(a, b);
+}
+
+/// A vertex near v and where it is relative to v (along mesh edges: unwrapped).
+struct RingPoint {
+    int vertex;
+    Vec3 d;
+};
+
 /// Vertices of surface s within two facet rings of v (v excluded).
-std::vector<int> two_ring(const Cluster& c, const PairFacets& pf, int v, int s) {
-    std::vector<int> ring = {v};
+std::vector<RingPoint> two_ring(const Cluster& c, const PairFacets& pf, int v, int s) {
+    std::vector<RingPoint> ring = {{v, Vec3::Zero()}};
+    std::map<int, bool> seen = {{v, true}};
     for (int pass = 0; pass < 2; ++pass) {
-        const std::vector<int> seeds = ring;
-        for (int u : seeds) {
-            const int k = c.pair_index(u, s);
+        const std::vector<RingPoint> seeds = ring;
+        for (const RingPoint& u : seeds) {
+            const int k = c.pair_index(u.vertex, s);
             for (int x = pf.start[k]; x < pf.start[k + 1]; ++x)
-                for (int w : c.surface(s).triangles[pf.facet_index[x]]) ring.push_back(w);
+                for (int w : c.surface(s).triangles[pf.facet_index[x]])
+                    if (seen.emplace(w, true).second)
+                        ring.push_back({w, u.d + edge_vector(c, u.vertex, w)});
         }
-        std::sort(ring.begin(), ring.end());
-        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
     }
-    ring.erase(std::find(ring.begin(), ring.end(), v));
+    ring.erase(ring.begin());
     return ring;
 }
 
@@ -52,7 +64,7 @@ std::vector<int> two_ring(const Cluster& c, const PairFacets& pf, int v, int s) 
 bool on_facet_facing(const Cluster& c, const PairFacets& pf, int u, int s, const Vec3& n) {
     const int k = c.pair_index(u, s);
     for (int x = pf.start[k]; x < pf.start[k + 1]; ++x) {
-        const Vec3 a = area_vector2(c.positions(), c.surface(s).triangles[pf.facet_index[x]]);
+        const Vec3 a = area_vector2(c.surface(s).corners(c.positions(), pf.facet_index[x]));
         if (a.dot(n) > std::cos(M_PI / 4) * a.norm()) return true;
     }
     return false;
@@ -61,14 +73,12 @@ bool on_facet_facing(const Cluster& c, const PairFacets& pf, int u, int s, const
 /// Unit direction in which film s leaves the line at x (tangent t), starting from the chord
 /// direction e1: fit w = a u + e r + b u^2 + c r^2 + d u r in the frame (e1, t, e2 = t x e1)
 /// and tilt e1 by the slope a.
-Vec3 film_direction(const Cluster& c, const std::vector<int>& ring, int v, const Vec3& t,
-                    const Vec3& e1) {
+Vec3 film_direction(const std::vector<RingPoint>& ring, const Vec3& t, const Vec3& e1) {
     const Vec3 e2 = t.cross(e1);
-    const Vec3& x = c.position(v);
     Eigen::MatrixXd P(ring.size(), 5);
     Eigen::VectorXd w(ring.size());
     for (std::size_t k = 0; k < ring.size(); ++k) {
-        const Vec3 d = c.position(ring[k]) - x;
+        const Vec3& d = ring[k].d;
         const double u = d.dot(e1), r = d.dot(t);
         P.row(k) << u, r, u * u, r * r, u * r;
         w[k] = d.dot(e2);
@@ -158,18 +168,18 @@ AngleStats triple_line_angles(const Cluster& c) {
         const JunctionEdge& e1 = c.junction_edges()[edges[1]];
         if (e0.surfaces != e1.surfaces) continue;
         const int prev = e0.a == v ? e0.b : e0.a, next = e1.a == v ? e1.b : e1.a;
-        const Vec3 t = (c.position(next) - c.position(prev)).normalized();
+        const Vec3 t = (edge_vector(c, v, next) - edge_vector(c, v, prev)).normalized();
         Vec3 dir[3];
         double sigma[3];
         for (int j = 0; j < 3; ++j) {
             // chord directions into the film from the facets at both line edges, averaged
             Vec3 chord = Vec3::Zero();
             for (const JunctionEdge* e : {&e0, &e1}) {
-                const Vec3 d = c.position(e->opposite[j]) - c.position(v);
+                const Vec3 d = edge_vector(c, v, e->opposite[j]);
                 chord += (d - d.dot(t) * t).normalized();
             }
             chord = (chord - chord.dot(t) * t).normalized();
-            dir[j] = film_direction(c, two_ring(c, pf, v, e0.surfaces[j]), v, t, chord);
+            dir[j] = film_direction(two_ring(c, pf, v, e0.surfaces[j]), t, chord);
             sigma[j] = c.surface(e0.surfaces[j]).sigma;
         }
         acc.stats.force_imbalance = std::max(acc.stats.force_imbalance,
@@ -192,14 +202,14 @@ AngleStats quadruple_point_angles(const Cluster& c) {
         for (int e : c.vertex_junction_edges(q)) {
             const JunctionEdge& edge = c.junction_edges()[e];
             const int p1 = edge.a == q ? edge.b : edge.a;
-            const Vec3 d1 = c.position(p1) - c.position(q);
+            const Vec3 d1 = edge_vector(c, q, p1);
             const int p2 = next_on_line(c, q, e);
             if (p2 < 0) {
                 dirs.push_back(d1.normalized());
                 continue;
             }
             // derivative at s = 0 of the quadratic through (0, 0), (s1, d1), (s2, d2)
-            const Vec3 d2 = c.position(p2) - c.position(q);
+            const Vec3 d2 = d1 + edge_vector(c, p1, p2);
             const double s1 = d1.norm(), s2 = s1 + (d2 - d1).norm();
             dirs.push_back((d1 * s2 / (s1 * (s2 - s1)) - d2 * s1 / (s2 * (s2 - s1))).normalized());
         }
@@ -250,13 +260,13 @@ AngleStats contact_angles(const Cluster& c) {
             // uses only vertices on facets that face the same way (not across a crease).
             const Vec3 chord_normal = (facet_normal[at[k][0]].normalized() +
                                        facet_normal[at[k][1]].normalized()).normalized();
-            std::vector<int> ring = two_ring(c, pf, v, s);
+            std::vector<RingPoint> ring = two_ring(c, pf, v, s);
             ring.erase(std::remove_if(ring.begin(), ring.end(),
-                                      [&](int u) {
-                                          return !on_facet_facing(c, pf, u, s, chord_normal);
+                                      [&](const RingPoint& u) {
+                                          return !on_facet_facing(c, pf, u.vertex, s, chord_normal);
                                       }),
                        ring.end());
-            const Vec3 into = film_direction(c, ring, v, t, chord);
+            const Vec3 into = film_direction(ring, t, chord);
             Vec3 nu = t.cross(into).normalized();
             if (nu.dot(chord_normal) < 0) nu = -nu;
             // On the crease itself (the two boundary facets 30+ degrees apart: a box corner) the

@@ -53,8 +53,9 @@ Eigen::MatrixXd body_volume_gradients(const Cluster& c, const std::vector<Vec3>&
         const std::vector<int> rim = rim_vertices(b);
         const auto on_rim = [&](int v) { return std::binary_search(rim.begin(), rim.end(), v); };
         for (const BodyFace& f : b.faces)
-            for (const Tri& t : c.surface(f.surface).triangles) {
-                const Vec3 a2 = f.sign * area_vector2(X, t) / 6.0;
+            for (std::size_t j = 0; j < c.surface(f.surface).triangles.size(); ++j) {
+                const Tri& t = c.surface(f.surface).triangles[j];
+                const Vec3 a2 = f.sign * area_vector2(c.surface(f.surface).corners(X, j)) / 6.0;
                 for (int k = 0; k < 3; ++k) {
                     const int v = t[k];
                     // The cone's gradient X_b x X_c / 6 differs from a2 / 6 by terms that

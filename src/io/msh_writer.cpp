@@ -1,5 +1,7 @@
 #include "io/msh_writer.h"
 
+#include "core/errors.h"
+
 #include "io/text_file.h"
 #include "mesh/cluster.h"
 
@@ -103,6 +105,9 @@ void put_elements(io::TextBuffer& b, const Cluster& c) {
 } // namespace
 
 void write_msh(const Cluster& c, const std::string& path) {
+    if (c.periodic())
+        throw InvalidInput("write: a periodic cluster cannot be written as .msh (its offsets "
+                           "would be lost); write .vtu, .off or .ply (unwrapped) or c:save");
     io::TextBuffer b;
     b.reserve(static_cast<std::size_t>(c.n_vertices()) * 64 + c.n_facets() * 32 + 1024);
     b << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";

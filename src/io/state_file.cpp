@@ -286,6 +286,9 @@ ClusterState parse_body(io::Tokens& t, long long version) {
 } // namespace
 
 ClusterState capture_state(const Cluster& c, std::vector<NamedValues> history) {
+    if (c.periodic())
+        throw InvalidInput("save: periodic clusters cannot be saved yet (the state format has "
+                           "no period); write .vtu to look at one");
     ClusterState s;
     s.spec = cluster_spec(c);
     s.spec.walls.clear(); // saved by their parameters, user walls and curves by name

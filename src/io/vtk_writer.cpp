@@ -37,11 +37,11 @@ void begin_array(io::TextBuffer& b, const char* type, std::string_view name, int
 
 void end_array(io::TextBuffer& b) { b << "\n        </DataArray>\n"; }
 
-void put_points(io::TextBuffer& b, const Cluster& c) {
+void put_points(io::TextBuffer& b, const DisplayMesh& m) {
     b << "      <Points>\n";
     begin_array(b, "Float64", "Points", 3);
     bool first = true;
-    for (const Vec3& x : c.positions()) {
+    for (const Vec3& x : m.points) {
         if (!first) b << '\n';
         first = false;
         b << x[0] << ' ' << x[1] << ' ' << x[2];
@@ -50,12 +50,12 @@ void put_points(io::TextBuffer& b, const Cluster& c) {
     b << "      </Points>\n";
 }
 
-void put_cells(io::TextBuffer& b, const Cluster& c) {
+void put_cells(io::TextBuffer& b, const Cluster& c, const DisplayMesh& m) {
     b << "      <Cells>\n";
     begin_array(b, "Int64", "connectivity");
     bool first = true;
-    for (const Surface& s : c.surfaces())
-        for (const Tri& t : s.triangles) {
+    for (const auto& tris : m.triangles)
+        for (const Tri& t : tris) {
             if (!first) b << '\n';
             first = false;
             b << t[0] << ' ' << t[1] << ' ' << t[2];
@@ -101,20 +101,22 @@ void put_cell_data(io::TextBuffer& b, const Cluster& c) {
     b << "      </CellData>\n";
 }
 
-void put_point_data(io::TextBuffer& b, const std::vector<PointField>& fields) {
+void put_point_data(io::TextBuffer& b, const std::vector<PointField>& fields,
+                    const DisplayMesh& m) {
     if (fields.empty()) return;
     b << "      <PointData Scalars=\"";
     b.xml_escaped(fields.front().name) << "\">\n";
     for (const PointField& field : fields) {
         begin_array(b, "Float64", field.name);
-        for (std::size_t i = 0; i < field.values.size(); ++i)
-            b << (i == 0 ? "" : i % kPerLine == 0 ? "\n" : " ") << field.values[i];
+        for (std::size_t i = 0; i < m.vertex.size(); ++i)
+            b << (i == 0 ? "" : i % kPerLine == 0 ? "\n" : " ") << field.values[m.vertex[i]];
         end_array(b);
     }
     b << "      </PointData>\n";
 }
 
 std::string vtu_text(const Cluster& c, const std::vector<PointField>& fields, double time) {
+    const DisplayMesh m = display_mesh(c); // periodic cells unwrapped
     io::TextBuffer b;
     b.reserve(static_cast<std::size_t>(c.n_vertices()) * (72 + 24 * fields.size()) +
               static_cast<std::size_t>(c.n_facets()) * 48 + 1024);
@@ -129,11 +131,11 @@ std::string vtu_text(const Cluster& c, const std::vector<PointField>& fields, do
       << "</DataArray>\n"
          "    </FieldData>\n"
          "    <Piece NumberOfPoints=\""
-      << c.n_vertices() << "\" NumberOfCells=\"" << c.n_facets() << "\">\n";
-    put_point_data(b, fields);
+      << static_cast<long long>(m.points.size()) << "\" NumberOfCells=\"" << c.n_facets() << "\">\n";
+    put_point_data(b, fields, m);
     put_cell_data(b, c);
-    put_points(b, c);
-    put_cells(b, c);
+    put_points(b, m);
+    put_cells(b, c, m);
     b << "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
     return b.str();
 }

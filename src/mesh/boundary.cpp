@@ -203,9 +203,15 @@ double lid_volume(const Cluster& c, const Lid& lid) {
 
 double body_volume(const Cluster& c, const Body& body, const std::vector<Vec3>& X) {
     double v = 0;
-    for (const BodyFace& f : body.faces)
-        for (const Tri& t : c.surface(f.surface).triangles)
-            v += f.sign * cone_volume(X[t[0]], X[t[1]], X[t[2]]);
+    for (const BodyFace& f : body.faces) {
+        const Surface& s = c.surface(f.surface);
+        for (std::size_t k = 0; k < s.triangles.size(); ++k) {
+            std::array<Vec3, 3> x = s.corners(X, k);
+            if (!f.shift.empty()) // a periodic cell: the facet where the unwrapped cell has it
+                for (Vec3& p : x) p += f.shift[k];
+            v += f.sign * cone_volume(x[0], x[1], x[2]);
+        }
+    }
     for (const Lid& lid : body.lids)
         v += lid_volume(c, lid, X);
     return v + body.volconst.value_or(0.0);

@@ -4,6 +4,8 @@
 #include "core/format.h"
 #include "mesh/csr.h"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -19,6 +21,7 @@ std::string surface_name(int s) { return "surface " + std::to_string(s + 1); }
 Cluster::Cluster(ClusterSpec spec) {
     check_spec(spec);
     X_ = std::move(spec.vertices);
+    period_ = spec.period;
     walls_ = std::move(spec.walls);
     surfaces_.resize(spec.surfaces.size());
     std::vector<std::pair<int, int>> vertex_surface;
@@ -26,13 +29,23 @@ Cluster::Cluster(ClusterSpec spec) {
         Surface& s = surfaces_[i];
         s.triangles = std::move(spec.surfaces[i].triangles);
         s.sigma = spec.surfaces[i].sigma;
+        if (period_) {
+            s.offsets = std::move(spec.surfaces[i].offsets);
+            s.offsets.resize(s.triangles.size()); // none given: all zero
+            s.shifts.resize(s.triangles.size());
+            for (std::size_t f = 0; f < s.offsets.size(); ++f)
+                for (int a = 0; a < 3; ++a)
+                    s.shifts[f][a] = *period_ * Eigen::Vector3i(s.offsets[f][a].data()).cast<double>();
+        }
         for (const Tri& t : s.triangles) s.vertices.insert(s.vertices.end(), t.begin(), t.end());
         std::sort(s.vertices.begin(), s.vertices.end());
         s.vertices.erase(std::unique(s.vertices.begin(), s.vertices.end()), s.vertices.end());
         for (int v : s.vertices) vertex_surface.emplace_back(v, static_cast<int>(i));
         n_facets_ += static_cast<int>(s.triangles.size());
-        for (const Tri& t : s.triangles)
-            initial_area_ += 0.5 * (X_[t[1]] - X_[t[0]]).cross(X_[t[2]] - X_[t[0]]).norm();
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const auto x = s.corners(X_, f);
+            initial_area_ += 0.5 * (x[1] - x[0]).cross(x[2] - x[0]).norm();
+        }
     }
     build_csr_lists(n_vertices(), vertex_surface, vs_start_, vs_list_);
     curves_ = std::move(spec.curves);
@@ -52,6 +65,7 @@ Cluster::Cluster(ClusterSpec spec) {
         build_csr_lists(n_vertices(), vertex_wall, vw_start_, vw_list_);
         given_attachments_ = true;
     }
+    if (period_) index_edge_offsets();
     classify_edges();
     attach_walls();
     build_triple_lines();
@@ -62,7 +76,10 @@ Cluster::Cluster(ClusterSpec spec) {
         vertex_edge.emplace_back(junction_edges_[e].b, e);
     }
     build_csr_lists(n_vertices(), vertex_edge, vj_start_, vj_list_);
-    orient_bodies(spec.bodies, spec.volconst);
+    if (period_)
+        orient_periodic_bodies(spec.bodies);
+    else
+        orient_bodies(spec.bodies, spec.volconst);
     target_volumes_ = initial_volumes_;
 }
 
@@ -121,7 +138,8 @@ void Cluster::set_volume_references(std::vector<double> initial, std::vector<dou
 ClusterSpec cluster_spec(const Cluster& c) {
     ClusterSpec spec;
     spec.vertices = c.positions();
-    for (const Surface& s : c.surfaces()) spec.surfaces.push_back({s.triangles, s.sigma});
+    if (c.periodic()) spec.period = c.period();
+    for (const Surface& s : c.surfaces()) spec.surfaces.push_back({s.triangles, s.sigma, s.offsets});
     for (const Body& b : c.bodies()) {
         std::vector<int> ids;
         for (const BodyFace& f : b.faces) ids.push_back(f.surface);
@@ -154,6 +172,10 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
             throw InvalidInput("cluster: the attachment of vertex " + std::to_string(v + 1) +
                                " to wall " + std::to_string(w + 1) + " is out of range");
     check_curve_points(spec);
+    if (spec.period) check_period(spec);
+    for (const auto& s : spec.surfaces)
+        if (!spec.period && !s.offsets.empty())
+            throw InvalidInput("cluster: facet offsets are given but no period");
     if (!spec.volconst.empty() && spec.volconst.size() != spec.bodies.size())
         throw InvalidInput("cluster: " + std::to_string(spec.volconst.size()) + " volconst "
                            "entries for " + std::to_string(spec.bodies.size()) + " bodies");
@@ -193,8 +215,11 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
                                        std::to_string(n) + " vertices");
             if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
                 throw TopologyError("cluster: " + where + " repeats a corner");
-            const Vec3 e1 = spec.vertices[t[1]] - spec.vertices[t[0]];
-            const Vec3 e2 = spec.vertices[t[2]] - spec.vertices[t[0]];
+            std::array<Vec3, 3> x = {spec.vertices[t[0]], spec.vertices[t[1]], spec.vertices[t[2]]};
+            if (spec.period && !s.offsets.empty())
+                for (int a = 0; a < 3; ++a)
+                    x[a] += *spec.period * Eigen::Vector3i(s.offsets[f][a].data()).cast<double>();
+            const Vec3 e1 = x[1] - x[0], e2 = x[2] - x[0];
             const double scale = std::max({e1.squaredNorm(), e2.squaredNorm(),
                                            (e2 - e1).squaredNorm()});
             if (e1.cross(e2).norm() <= 1e-12 * scale)
@@ -202,6 +227,33 @@ void Cluster::check_spec(const ClusterSpec& spec) const {
                                     ", " + std::to_string(t[1] + 1) + ", " +
                                     std::to_string(t[2] + 1) + ") has zero area");
         }
+    }
+}
+
+void Cluster::check_period(const ClusterSpec& spec) const {
+    const Eigen::Matrix3d& L = *spec.period;
+    if (!L.allFinite() || L.cwiseAbs().maxCoeff() > kMaxCoordinate)
+        throw InvalidInput("cluster: the period vectors must be finite (at most 1e100)");
+    const double scale = L.colwise().norm().prod();
+    if (!(std::abs(L.determinant()) > 1e-12 * scale))
+        throw InvalidInput("cluster: the period vectors are linearly dependent (det " +
+                           fmt(L.determinant()) + "); a periodic box needs three independent ones");
+    if (!spec.walls.empty())
+        throw InvalidInput("cluster: a periodic cluster cannot have walls (not supported)");
+    for (std::size_t i = 0; i < spec.surfaces.size(); ++i) {
+        const auto& s = spec.surfaces[i];
+        if (!s.offsets.empty() && s.offsets.size() != s.triangles.size())
+            throw InvalidInput("cluster: " + surface_name(static_cast<int>(i)) + " has " +
+                               std::to_string(s.offsets.size()) + " offset triples for " +
+                               std::to_string(s.triangles.size()) + " facets");
+        for (std::size_t f = 0; f < s.offsets.size(); ++f)
+            for (const Offset& k : s.offsets[f])
+                for (int d : k)
+                    if (std::abs(d) > kMaxOffset)
+                        throw InvalidInput("cluster: " + surface_name(static_cast<int>(i)) +
+                                           " facet " + std::to_string(f + 1) + " has the lattice "
+                                           "offset " + std::to_string(d) + "; at most " +
+                                           std::to_string(kMaxOffset) + " in magnitude");
     }
 }
 

@@ -13,6 +13,8 @@
 #include "mesh/walls.h"
 
 #include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,11 +26,19 @@ namespace froth {
 /// coordinates, and 1e100 cubed is still finite.
 inline constexpr double kMaxCoordinate = 1e100;
 
+/// Integer lattice coordinates: a facet corner of a periodic cluster sits at X[v] + L k.
+using Offset = std::array<int, 3>;
+/// The largest lattice coordinate a facet corner may have (a facet spans a few periods at most).
+inline constexpr int kMaxOffset = 1000;
+
 /// What a builder or a user hands to the engine. All ids are 0-based.
 struct ClusterSpec {
     struct Surface {
         std::vector<Tri> triangles; ///< vertex ids; one consistent orientation per surface
         double sigma = 1.0;         ///< isotropic surface tension
+        /// Periodic clusters only: per facet, the lattice offsets k of its three corners (the
+        /// corner of vertex v is at X[v] + period k). Empty: all zero.
+        std::vector<std::array<Offset, 3>> offsets;
     };
     std::vector<Vec3> vertices;
     std::vector<Surface> surfaces;
@@ -60,6 +70,12 @@ struct ClusterSpec {
     /// fixed, and at its curve's point x(p) (within 1e-9 of its size).
     std::vector<CurvePtr> curves;
     std::vector<CurvePoint> curve_points;
+    /// A periodic cluster (Evolver's torus model): the three period vectors as the columns of
+    /// L. Space is R^3 modulo the lattice L Z^3; facets reach across the box through their
+    /// corners' offsets (Surface::offsets), and every body must be a cell (a region bounded by
+    /// one closed surface once unwrapped). A surface named twice in a body bounds it on both
+    /// sides (a film between a cell and its own periodic image). No walls.
+    std::optional<Eigen::Matrix3d> period;
 };
 
 /// A surface of the cluster. Its energy density is sigma gamma(nu) (seed (1.15); gamma null:
@@ -71,6 +87,21 @@ struct Surface {
     Mobility beta;                           ///< 1 unless set
     std::vector<int> vertices;               ///< sorted global ids of the vertices of this surface
 
+    /// Periodic clusters only (else empty): per facet its corners' lattice offsets and the
+    /// shifts period * offset they stand for.
+    std::vector<std::array<Offset, 3>> offsets;
+    std::vector<std::array<Vec3, 3>> shifts;
+
+    /// The three corners of facet f at positions X (one per vertex): X[t[a]], moved by the
+    /// corner's lattice shift in a periodic cluster, so that the facet is whole. Every
+    /// per-facet quantity (areas, normals, stiffness, volumes) is computed on these.
+    std::array<Vec3, 3> corners(const std::vector<Vec3>& X, std::size_t f) const {
+        const Tri& t = triangles[f];
+        if (shifts.empty()) return {X[t[0]], X[t[1]], X[t[2]]};
+        const auto& d = shifts[f];
+        return {X[t[0]] + d[0], X[t[1]] + d[1], X[t[2]] + d[2]};
+    }
+
     /// True when the surface uses the cotangent (isotropic) stiffness: gamma null or a multiple
     /// of |.|.
     bool isotropic() const { return !gamma || gamma->is_isotropic(); }
@@ -79,9 +110,14 @@ struct Surface {
 };
 
 /// One (surface, sign) entry of a body: sign = +1 when the surface normal points out of the body.
+/// In a periodic cluster a surface may appear twice in a body, once with each sign (a film
+/// between a cell and its own image), and `shift` holds per facet the lattice translation that
+/// puts it where the unwrapped cell has it (empty otherwise): the body's volume is the
+/// divergence theorem over those translated facets.
 struct BodyFace {
     int surface;
     int sign;
+    std::vector<Vec3> shift;
 };
 
 /// Where a body meets walls or wires: a closed loop of free boundary edges of the body's films,
@@ -139,6 +175,23 @@ class Cluster {
     int n_surfaces() const { return static_cast<int>(surfaces_.size()); }
     int n_facets() const { return n_facets_; }
     int n_bodies() const { return static_cast<int>(bodies_.size()); }
+    /// True when the bodies of a periodic cluster fill its box: every surface bounds two
+    /// cells (or one cell on both sides), so the volumes add up to the box's and the last one
+    /// is fixed by the others.
+    bool fills_box() const { return fills_box_; }
+    /// The bodies whose volumes are constraints of their own: all, or all but the last when
+    /// the bodies fill the box (its multiplier, the pressure, is the gauge 0).
+    int n_volume_constraints() const { return n_bodies() - (fills_box_ ? 1 : 0); }
+    /// |det period|, the volume of the periodic box (only for a periodic cluster).
+    double box_volume() const;
+    /// True for a periodic cluster (ClusterSpec::period).
+    bool periodic() const { return period_.has_value(); }
+    /// The period vectors as columns (only for a periodic cluster).
+    const Eigen::Matrix3d& period() const { return *period_; }
+    /// The lattice shift from vertex a to its neighbour b along their edge: X[b] - X[a] +
+    /// edge_shift(a, b) is the edge vector (zero but in a periodic cluster; a and b must share
+    /// an edge there).
+    Vec3 edge_shift(int a, int b) const;
 
     const std::vector<Vec3>& positions() const { return X_; }
     const Vec3& position(int v) const { return X_[v]; }
@@ -241,12 +294,19 @@ class Cluster {
   private:
     void check_spec(const ClusterSpec& spec) const;
     void check_curve_points(const ClusterSpec& spec) const;
+    void check_period(const ClusterSpec& spec) const;
     void classify_edges();
     void build_triple_lines();
     /// \throw InvalidInput "<op>: the tensions at triple line k ... break the triangle inequality"
     void check_tension_triangles(const char* op) const;
     void orient_bodies(const std::vector<std::vector<int>>& body_surfaces,
                        const std::vector<std::optional<double>>& volconst);
+    /// Periodic clusters: each body's facets found by walking its unwrapped surface
+    /// (mesh/periodic.cpp), with their signs and lattice shifts.
+    void orient_periodic_bodies(const std::vector<std::vector<int>>& body_surfaces);
+    /// Periodic clusters: every edge joins its two vertices with one lattice offset; records
+    /// it for edge_shift.
+    void index_edge_offsets();
     void attach_walls();
     /// How far from a wall a vertex may be and count as on it.
     double wall_tolerance() const;
@@ -255,6 +315,9 @@ class Cluster {
     void find_lids(Body& body) const;
 
     std::vector<Vec3> X_;
+    std::optional<Eigen::Matrix3d> period_;
+    bool fills_box_ = false;
+    std::unordered_map<std::int64_t, Vec3> edge_shift_; // (lo, hi) -> shift from lo to hi
     std::vector<Surface> surfaces_;
     std::vector<Body> bodies_;
     std::vector<JunctionEdge> junction_edges_;
@@ -311,6 +374,30 @@ struct EquiangulateResult {
 /// and everything refine carries over are kept.
 /// \throw InvalidInput for max_sweeps < 1; what the Cluster constructor throws.
 EquiangulateResult equiangulate(const Cluster& c, int max_sweeps = 100);
+
+/// Turns a spec whose vertices are unwrapped positions into a periodic one: vertices that are
+/// lattice translates of one another (within 1e-9 of the period's size) become one vertex,
+/// placed at its first occurrence reduced into the cell L [0, 1)^3, and each facet corner
+/// gets the offset that puts it back where it was. Vertices are renumbered by first
+/// appearance; returns the new id of every old vertex. Sets spec.period = L.
+/// \throw InvalidInput for a singular or non-finite L, or an offset beyond kMaxOffset.
+std::vector<int> identify_periodic_images(ClusterSpec& spec, const Eigen::Matrix3d& L);
+
+/// When c's bodies fill its periodic box, their target volumes must add up to the box's
+/// volume (to 1e-9 of it), or no state holds them all. \throw InvalidInput naming `op`, the sum
+/// and the box volume otherwise.
+void check_filled_box_targets(const Cluster& c, const char* op);
+
+/// The cluster as a plain triangle mesh for writers: in a periodic cluster each distinct
+/// (vertex, lattice offset) of a facet corner is a point of its own, so every facet is drawn
+/// whole where its corners put it (films reach out of the box rather than wrap); otherwise the
+/// cluster's own vertices and triangles.
+struct DisplayMesh {
+    std::vector<Vec3> points;
+    std::vector<int> vertex;           ///< the cluster vertex of each point
+    std::vector<std::vector<Tri>> triangles; ///< per surface, into points
+};
+DisplayMesh display_mesh(const Cluster& c);
 
 /// Removes from spec the facets with all three corners on one of spec.walls (within 1e-6 of
 /// the mean edge length): the faces of a solid that rest on a wall are its lids, not films.

@@ -97,6 +97,8 @@ EquiangulateResult equiangulate(const Cluster& c, int max_sweeps) {
     if (max_sweeps < 1)
         throw InvalidInput("equiangulate: max_sweeps must be at least 1, got " +
                            std::to_string(max_sweeps));
+    if (c.periodic())
+        throw InvalidInput("equiangulate: periodic clusters are not supported yet (refine is)");
     Flipper f{c, {}, {}};
     for (const Surface& s : c.surfaces()) {
         f.tris.push_back(s.triangles);

@@ -42,7 +42,9 @@ Cluster refine(const Cluster& c) {
     std::map<std::pair<int, int>, int> midpoint;
     std::map<std::pair<int, int>, bool> boundary;
     for (const BoundaryEdge& e : c.boundary_edges()) boundary[{std::min(e.a, e.b), std::max(e.a, e.b)}] = true;
-    const auto mid = [&](int a, int b) {
+    // In a periodic cluster the facet's corners (xa, xb) are whole: the midpoint sits in the
+    // frame of the edge's lower vertex, and each facet gives it that vertex's offset.
+    const auto mid = [&](int a, int b, const Vec3& xa, const Vec3& xb, const Vec3& shift_lo) {
         const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
         auto [it, fresh] = midpoint.try_emplace(key, static_cast<int>(spec.vertices.size()));
         const CurvePoint *ca = c.curve_point(a), *cb = c.curve_point(b);
@@ -55,19 +57,34 @@ Cluster refine(const Cluster& c) {
             for (int w : common_walls(c, a, b)) spec.attachments.push_back({it->second, w});
             spec.vertices.push_back(wall_midpoint(c, a, b));
         } else if (fresh) {
-            spec.vertices.push_back(0.5 * (c.position(a) + c.position(b)));
+            spec.vertices.push_back(0.5 * (xa + xb) - shift_lo);
         }
         return it->second;
     };
     for (const Surface& s : c.surfaces()) {
         ClusterSpec::Surface out;
         out.sigma = s.sigma;
-        for (const Tri& t : s.triangles) {
-            const int m01 = mid(t[0], t[1]), m12 = mid(t[1], t[2]), m20 = mid(t[2], t[0]);
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const Tri& t = s.triangles[f];
+            const auto x = s.corners(c.positions(), f);
+            const auto shift = [&](int a) { return s.shifts.empty() ? Vec3::Zero().eval() : s.shifts[f][a]; };
+            const auto m = [&](int a, int b) { // the midpoint of corners a, b and its offset
+                const int lo = t[a] < t[b] ? a : b;
+                return std::pair{mid(t[a], t[b], x[a], x[b], shift(lo)), lo};
+            };
+            const auto [m01, l01] = m(0, 1);
+            const auto [m12, l12] = m(1, 2);
+            const auto [m20, l20] = m(2, 0);
             out.triangles.push_back({t[0], m01, m20});
             out.triangles.push_back({m01, t[1], m12});
             out.triangles.push_back({m20, m12, t[2]});
             out.triangles.push_back({m01, m12, m20});
+            if (s.offsets.empty()) continue;
+            const auto& k = s.offsets[f];
+            out.offsets.push_back({k[0], k[l01], k[l20]});
+            out.offsets.push_back({k[l01], k[1], k[l12]});
+            out.offsets.push_back({k[l20], k[l12], k[2]});
+            out.offsets.push_back({k[l01], k[l12], k[l20]});
         }
         spec.surfaces.push_back(std::move(out));
     }

@@ -243,7 +243,7 @@ void Cluster::orient_bodies(const std::vector<std::vector<int>>& body_surfaces,
         if (shells > 1 && walls_.empty() && wire_edges_.empty())
             orient_shells(surfaces_, X_, sign, shell, shells);
         Body body;
-        for (auto [s, sg] : sign) body.faces.push_back({s, sg});
+        for (auto [s, sg] : sign) body.faces.push_back({s, sg, {}});
         find_lids(body);
         // Oriented by the volume its films and lids enclose; a volconst only shifts it.
         const double enclosed = body_volume(*this, body, X_);

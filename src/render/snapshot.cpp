@@ -153,21 +153,19 @@ std::string render_rgb(const Cluster& c, const SnapshotOptions& o, SnapshotStats
               std::vector<Rgb>(std::size_t(W) * H, Rgb{1, 1, 1}),
               std::vector<int>(std::size_t(W) * H, -1)};
     const std::vector<Rgb> by_vertex = vertex_colors(c, o.color);
-    std::vector<Vec3> screen(c.n_vertices());
-    for (int v = 0; v < c.n_vertices(); ++v)
-        screen[v] = cam.project(c.position(v));
     for (int s = 0; s < c.n_surfaces(); ++s) {
         const auto sc = surface_color(s);
         const Rgb flat{sc[0] / 255.f, sc[1] / 255.f, sc[2] / 255.f};
-        for (const Tri& t : c.surface(s).triangles) {
-            const Vec3 n = (c.position(t[1]) - c.position(t[0]))
-                               .cross(c.position(t[2]) - c.position(t[0]))
-                               .normalized();
+        for (std::size_t f = 0; f < c.surface(s).triangles.size(); ++f) {
+            const Tri& t = c.surface(s).triangles[f];
+            const auto x = c.surface(s).corners(c.positions(), f); // whole across a periodic box
+            const Vec3 n = (x[1] - x[0]).cross(x[2] - x[0]).normalized();
             const float shade = static_cast<float>(0.3 + 0.7 * std::abs(n.dot(light)));
             std::array<Rgb, 3> col;
             for (int k = 0; k < 3; ++k)
                 col[k] = o.color == "surface" ? flat : by_vertex[t[k]];
-            draw_triangle({screen[t[0]], screen[t[1]], screen[t[2]]}, col, shade, s, b, W, H);
+            draw_triangle({cam.project(x[0]), cam.project(x[1]), cam.project(x[2])}, col, shade, s,
+                          b, W, H);
         }
     }
     std::string rgb(std::size_t(o.width) * o.height * 3, static_cast<char>(kBackground));

@@ -37,8 +37,9 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
         const auto& tris = s.triangles;
         for (int f = 0; f < static_cast<int>(tris.size()); ++f)
             for (int k = 0; k < 3; ++k) {
-                const Vec3 u = X[tris[f][(k + 1) % 3]] - X[tris[f][k]];
-                const Vec3 w = X[tris[f][(k + 2) % 3]] - X[tris[f][k]];
+                const auto x = s.corners(X, f);
+                const Vec3 u = x[(k + 1) % 3] - x[k];
+                const Vec3 w = x[(k + 2) % 3] - x[k];
                 const double len = u.norm();
                 sum += len, ++count;
                 if (len < shortest) shortest = len, s_edge = i, f_edge = f;

@@ -68,7 +68,7 @@ std::vector<Vec3> plane_directions(const Anisotropy& gamma, const WulffOptions& 
 ClusterSpec one_body(TriangleSurface s) {
     ClusterSpec spec;
     spec.vertices = std::move(s.vertices);
-    spec.surfaces.push_back({std::move(s.triangles), 1.0});
+    spec.surfaces.push_back({std::move(s.triangles), 1.0, {}});
     spec.bodies = {{0}};
     return spec;
 }

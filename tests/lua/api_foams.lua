@@ -1,0 +1,181 @@
+-- Periodic clusters and foams (docs/lua_api.md, "Foams and periodic clusters"): exact volumes
+-- and areas of a cell across the box's faces, the same steps as the unwrapped cell, Kelvin's
+-- flat cell exactly, Kelvin and Weaire-Phelan after minimize against the literature (5.306,
+-- 5.288: Weaire and Phelan, Phil. Mag. Lett. 69, 1994, both from Surface Evolver), the filled
+-- box's volume sum, and the errors.
+local T = require("froth.test")
+
+local function sum(v)
+  local s = 0
+  for _, x in ipairs(v) do s = s + x end
+  return s
+end
+
+-- An octahedron of radius r about `center`: 8 facets, outward.
+local function octahedron(center, r)
+  local V = {}
+  for _, d in ipairs{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}} do
+    V[#V + 1] = {center[1] + r * d[1], center[2] + r * d[2], center[3] + r * d[3]}
+  end
+  local F = {}
+  for _, x in ipairs{1, 2} do
+    for _, y in ipairs{3, 4} do
+      for _, z in ipairs{5, 6} do
+        local odd = (x == 2) ~= (y == 4) ~= (z == 6)
+        F[#F + 1] = odd and {x, z, y} or {x, y, z}
+      end
+    end
+  end
+  return V, F
+end
+
+local unit = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}
+
+-- A cell across three faces of the box: the same volume, area and steps as unwrapped.
+do
+  local V, F = octahedron({0.95, 0.9, 0.97}, 0.3)
+  local free = froth.cluster{vertices = V, surfaces = {F}, bodies = {{1}}}
+  local torus = froth.cluster{vertices = V, surfaces = {F}, bodies = {{1}}, period = unit}
+  local inside = 0
+  for v = 1, torus:info().vertices do
+    local x = torus:vertex(v)
+    if x[1] >= 0 and x[1] < 1 and x[2] >= 0 and x[2] < 1 and x[3] >= 0 and x[3] < 1 then
+      inside = inside + 1
+    end
+  end
+  T.assert_true(inside == 6, "the vertices are reduced into the box")
+  free:refine(); free:refine(); torus:refine(); torus:refine()
+  T.assert_equal(torus:period()[2][2], 1.0, "c:period() gives the period vectors")
+  T.assert_equal(free:period(), nil, "no period for a cluster in space")
+  T.assert_near(torus:volumes()[1], 4 / 3 * 0.3 ^ 3, 1e-15, "the octahedron's volume across the box")
+  T.assert_near(torus:energy(), 8 * math.sqrt(3) / 4 * (0.3 * math.sqrt(2)) ^ 2, 1e-14, "its area")
+  for _, flow in ipairs{"mcf", "sd"} do
+    local a, b = free:clone(), torus:clone()
+    for _ = 1, 3 do
+      a:step{flow = flow, tau = 1e-3}
+      b:step{flow = flow, tau = 1e-3}
+    end
+    T.assert_near(b:energy(), a:energy(), 1e-12, flow .. ": the periodic cell steps as the free one")
+    T.assert_near(b:volumes()[1], a:volumes()[1], 1e-14, flow .. ": the same volume")
+  end
+  local r = torus:clone():minimize{}
+  T.assert_true(r.converged, "minimize converges across the box")
+  T.assert_near(r.volumes[1], 4 / 3 * 0.3 ^ 3, 1e-14, "at the target volume")
+end
+
+-- Kelvin's flat cell: the truncated octahedron of volume 1, area (6 + 12 sqrt 3) a^2 with
+-- 8 sqrt 2 a^3 = 1; two cells fill the box, each film counted once per period.
+local flat_cost = (6 + 12 * math.sqrt(3)) / (8 * math.sqrt(2)) ^ (2 / 3)
+do
+  local c = froth.kelvin_foam{h = 0.3}
+  local v = c:volumes()
+  T.assert_near(v[1], 1, 1e-13, "Kelvin: cell 1 has volume 1")
+  T.assert_near(v[2], 1, 1e-13, "Kelvin: cell 2 has volume 1")
+  T.assert_near(c:energy(), flat_cost, 1e-12, "Kelvin: the flat cells' exact area")
+  local info = c:info()
+  T.assert_equal(info.surfaces, 14, "Kelvin: 14 films a period (8 hexagons, 6 squares)")
+  T.assert_equal(#c:triple_lines(), 24, "Kelvin: 24 triple lines a period")
+  T.assert_equal(#c:quadruple_points(), 12, "Kelvin: 12 quadruple points a period")
+  local shifted = froth.voronoi_foam{sites = {{0.3, 0.1, 0.2}, {0.3 + 0.5 * c:period()[1][1],
+    0.1 + 0.5 * c:period()[1][1], 0.2 + 0.5 * c:period()[1][1]}}, period = c:period(), h = 0.3}
+  T.assert_near(shifted:energy(), c:energy(), 1e-12, "Kelvin: translating the sites changes nothing")
+  c:write("out/kelvin_flat.vtu")
+  local text = io.open("out/kelvin_flat.vtu"):read("a")
+  T.assert_true(tonumber(text:match('NumberOfPoints="(%d+)"')) > info.vertices,
+                "the VTU shows the cells unwrapped (points per vertex and offset)")
+end
+
+-- Kelvin minimized: converges in h towards 5.306 (5.30630 at h = 0.02, docs/benchmarks.md).
+local kelvin = {}
+for _, h in ipairs{0.3, 0.15} do
+  local c = froth.kelvin_foam{h = h}
+  local r = c:minimize{}
+  T.assert_true(r.converged, "Kelvin h = " .. h .. ": minimize converges")
+  kelvin[h] = c:energy() -- = 2 E / (2 cells) at V = 1
+  T.assert_true(math.abs(kelvin[h] - 5.306) < 0.001 * 5.306, "Kelvin h = " .. h .. " within 0.1% of 5.306",
+                tostring(kelvin[h]))
+  T.assert_near(r.pressures[2], 0, 0, "the last cell of a filled box has pressure 0 (the gauge)")
+  T.assert_near(r.pressures[1], 0, 1e-6, "Kelvin's two cells have one pressure")
+  if h == 0.15 then
+    local rep = c:report()
+    T.assert_true(math.abs(rep.angles.min - 120) < 3 and math.abs(rep.angles.max - 120) < 3,
+                  "Kelvin: the films meet at 120 degrees (flat: 109.5..125.3)",
+                  rep.angles.min .. ".." .. rep.angles.max)
+    local d = c:clone()
+    d:refine()
+    T.assert_near(sum(d:volumes()), 2, 1e-12, "refine keeps the filled box's volume")
+    T.assert_true(d:minimize{}.converged and d:energy() < kelvin[h], "refined, the cost falls further",
+                  tostring(d:energy()))
+  end
+end
+T.assert_true(kelvin[0.15] < kelvin[0.3] and kelvin[0.3] < flat_cost, "Kelvin: the cost falls with h")
+
+-- Weaire-Phelan: unequal flat cells made equal, 0.3% below Kelvin at the same h.
+do
+  local c = froth.weaire_phelan_foam{h = 0.3}
+  local v0 = c:volumes()
+  T.assert_true(math.abs(v0[1] - 1) > 0.02, "WP: the flat dodecahedra are not of volume 1", tostring(v0[1]))
+  T.assert_near(sum(v0), 8, 1e-12, "WP: eight cells fill the box of volume 8")
+  local r = c:minimize{max_iterations = 300}
+  local cost = 2 * c:energy() / 8
+  T.assert_true(math.abs(cost - 5.288) < 0.001 * 5.288, "WP within 0.1% of 5.288", tostring(cost))
+  T.assert_true(cost < kelvin[0.3] * (1 - 0.002), "WP beats Kelvin by more than 0.2%",
+                cost .. " vs " .. kelvin[0.3])
+  for b = 1, 8 do T.assert_near(r.volumes[b], 1, 1e-9, "WP: cell " .. b .. " at volume 1") end
+  local d = froth.weaire_phelan_foam{h = 0.3}
+  d:step{flow = "mcf", tau = 1e-3}
+  T.assert_near(sum(d:volumes()), 8, 1e-12, "MCF keeps the filled box's volume sum")
+  d = froth.weaire_phelan_foam{h = 0.3}
+  d:step{flow = "sd", tau = 1e-4}
+  T.assert_near(d:volumes()[1], 1, 1e-12, "volume-exact SD takes a filled box's cells to their targets")
+end
+
+-- Random foams.
+do
+  local c = froth.foam{n = 8, seed = 3, h = 0.3}
+  T.assert_equal(c:info().bodies, 8, "foam: one body per site")
+  T.assert_near(sum(c:volumes()), 8, 1e-12, "foam: the cells fill the box of volume n")
+  local d = froth.foam{n = 8, seed = 3, h = 0.3}
+  T.assert_equal(d:energy(), c:energy(), "foam: the same seed, the same foam")
+end
+
+-- Errors.
+local function slab(z)
+  local V, F = {}, {}
+  local function id(i, j) return i * 4 + j + 1 end
+  for i = 0, 3 do for j = 0, 3 do V[#V + 1] = {i / 3, j / 3, z} end end
+  for i = 0, 2 do
+    for j = 0, 2 do
+      F[#F + 1] = {id(i, j), id(i + 1, j), id(i + 1, j + 1)}
+      F[#F + 1] = {id(i, j), id(i + 1, j + 1), id(i, j + 1)}
+    end
+  end
+  return V, F
+end
+local V1, F1 = slab(0.25)
+T.check_error("body 1 wraps around the periodic box", froth.cluster,
+              {vertices = V1, surfaces = {F1}, bodies = {{1}}, period = unit})
+T.check_error("period must be three vectors", froth.cluster,
+              {vertices = V1, surfaces = {F1}, period = {{1, 0, 0}}})
+T.check_error("the period vectors must be finite and linearly independent", froth.cluster,
+              {vertices = V1, surfaces = {F1}, period = {{1, 0, 0}, {0, 1, 0}, {1, 1, 0}}})
+local V, F = octahedron({0.5, 0.5, 0.5}, 0.2)
+T.check_error("a periodic cluster cannot have walls", froth.cluster,
+              {vertices = V, surfaces = {F}, period = unit, walls = froth.plane{}})
+T.check_error("names surface 1 more than twice", froth.cluster,
+              {vertices = V, surfaces = {F}, bodies = {{1, 1, 1}}, period = unit})
+local k = froth.kelvin_foam{h = 0.3}
+k:set_volume(1, 1.5)
+T.check_error("their target volumes must add up to its volume 2", k.minimize, k, {})
+T.check_error("periodic clusters are not supported yet", k.equiangulate, k)
+T.check_error("periodic clusters cannot be saved yet", k.save, k, "out/kelvin.froth")
+T.check_error("cannot be written as .msh", k.write, k, "out/kelvin.msh")
+T.check_error("two sites coincide", froth.voronoi_foam,
+              {sites = {{0, 0, 0}, {1, 1, 1}}, period = unit, h = 0.3})
+T.check_error("h must be positive", froth.voronoi_foam,
+              {sites = {{0, 0, 0}, {0.5, 0.5, 0.5}}, period = unit, h = 0})
+T.check_error("take a larger h", froth.voronoi_foam,
+              {sites = {{0, 0, 0}, {0.5, 0.5, 0.5}}, period = unit, h = 1e-5})
+T.check_error("kelvin_foam: unknown option 'n'", froth.kelvin_foam, {n = 3})
+T.check_error("foam: n must be an integer >= 2", froth.foam, {n = 1})
+T.summary()
