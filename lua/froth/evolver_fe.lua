@@ -16,14 +16,16 @@
 -- closed by films, walls and wires (an edge between two fixed vertices on a film's border is a
 -- wire); a body's `volconst` selects Evolver's volume (z dx dy over its facets plus the
 -- constant, its lids counting nothing), so its `volume` target means what it means to Evolver.
+-- The torus model (TORUS, TORUS_FILLED, periods, edge wraps * + -) becomes a periodic cluster:
+-- each face's corners unwrapped along its edges' wraps, a face listed twice in a body a film
+-- on both sides of the cell, and with TORUS_FILLED the last body's target the rest of the box.
 -- Anything else (inequality constraints, content integrands, sliding boundary vertices,
--- quantities, torus models, gravity, ...) is one error naming the keyword and the line, never
--- a wrong cluster.
+-- quantities, gravity, ...) is one error naming the keyword and the line, never a wrong
+-- cluster.
 local M = {}
 
 local unsupported = {
   quantity = "named quantities", method_instance = "method instances",
-  torus = "the torus model", torus_filled = "the torus model", periods = "the torus model",
   symmetry_group = "symmetry groups", gravity = "gravity",
   string = "the string model", lagrange_order = "Lagrange elements",
   space_dimension = "other space dimensions", simplex_representation = "the simplex model",
@@ -166,6 +168,9 @@ local function start_boundary(path, n, t, data)
 end
 
 local sections = {vertices = true, edges = true, faces = true, facets = true, bodies = true}
+-- Display settings whose lines of numbers froth skips (the torus model's view transforms).
+local display_sections = {view_transform_generators = true, view_transforms = true}
+local wrap_symbol = {["*"] = 0, ["+"] = 1, ["-"] = -1}
 -- Model declarations that say what froth does anyway.
 local ignored = {soapfilm = true, linear = true}
 local singular = {vertices = "vertex", edges = "edge", faces = "face", bodies = "body"}
@@ -297,6 +302,18 @@ local function parse(path, lines)
       current, section = start_constraint(path, n, t, data), "constraint"
     elseif key == "boundary" then
       current, section = start_boundary(path, n, t, data), "boundary"
+    elseif key == "torus" or key == "torus_filled" then
+      if t[2] then fail(path, n, "%s takes no value", t[1]) end
+      data.torus, section = key, nil
+    elseif key == "periods" then
+      data.periods, section = {}, "periods"
+    elseif section == "periods" and tonumber(t[1]) then
+      if #t ~= 3 or #data.periods == 3 then fail(path, n, "periods: three lines of three numbers") end
+      data.periods[#data.periods + 1] = {eval(t[1], n), eval(t[2], n), eval(t[3], n)}
+    elseif display_sections[key] then
+      section = "display"
+    elseif section == "display" and tonumber(t[1]) then
+      -- a view transform: display only
     elseif key == "gravity_constant" then
       if not t[2] or t[3] then fail(path, n, "gravity_constant needs one value") end
       data.gravity, section = eval(t[2], n), nil
@@ -315,7 +332,14 @@ local function parse(path, lines)
            section == "constraint" and "formula:, energy: e1: e2: e3:, content: c1: c2: c3:"
            or "x1:, x2:, x3:")
     else
+      local wrap
+      if section == "edges" and data.torus and t[6] and wrap_symbol[t[4]] and wrap_symbol[t[5]]
+         and wrap_symbol[t[6]] then -- the torus wraps of the edge's head, per period
+        wrap = {wrap_symbol[t[4]], wrap_symbol[t[5]], wrap_symbol[t[6]]}
+        t = {t[1], t[2], t[3], table.unpack(t, 7)}
+      end
       local id, record = read_element(path, n, t, section, params, eval)
+      if section == "edges" then record.wrap = wrap or {0, 0, 0} end
       if data[section][id] then fail(path, n, "%s %d is defined twice", singular[section], id) end
       data[section][id] = record
     end
@@ -325,7 +349,7 @@ end
 
 --- The vertex loop of a face from its signed edges, checked to be closed.
 local function face_vertices(path, data, fid, face)
-  local loop = {}
+  local loop, offsets, at = {}, {{0, 0, 0}}, {0, 0, 0}
   for k, se in ipairs(face.loop) do
     local e = data.edges[math.abs(se)]
     if not e then fail(path, face.line, "face %d uses edge %d, which is not defined", fid, math.abs(se)) end
@@ -336,21 +360,33 @@ local function face_vertices(path, data, fid, face)
     end
     if k == 1 then loop[1] = a end
     loop[#loop + 1] = b
+    local sg = se < 0 and -1 or 1 -- the wrap leads from the edge's tail to its head
+    at = {at[1] + sg * e.wrap[1], at[2] + sg * e.wrap[2], at[3] + sg * e.wrap[3]}
+    offsets[#offsets + 1] = at
   end
   if loop[#loop] ~= loop[1] then fail(path, face.line, "face %d: its edge loop is not closed", fid) end
-  loop[#loop] = nil
-  return loop
+  if at[1] ~= 0 or at[2] ~= 0 or at[3] ~= 0 then
+    fail(path, face.line, "face %d: its edge loop wraps around the torus (%d %d %d periods)", fid,
+         at[1], at[2], at[3])
+  end
+  loop[#loop], offsets[#offsets] = nil, nil
+  return loop, offsets
 end
 
 --- Groups the faces into surfaces (joined across edges of exactly two faces) and orients
 --- each group consistently; returns {faces (ids), flip (per face)} per surface.
-local function surfaces_of(path, loops, order, line_of)
+local function surfaces_of(path, loops, order, line_of, edge_ids)
   local uses = {} -- undirected edge key -> list of {face, direction}
+  -- In a torus two edges may join the same vertices through different images: the key is then
+  -- the edge's id.
+  local function key_of(f, k, a, b)
+    return edge_ids and ("e" .. math.abs(edge_ids[f][k])) or (math.min(a, b) .. "-" .. math.max(a, b))
+  end
   for _, f in ipairs(order) do
     local loop = loops[f]
     for k = 1, #loop do
       local a, b = loop[k], loop[k % #loop + 1]
-      local key = math.min(a, b) .. "-" .. math.max(a, b)
+      local key = key_of(f, k, a, b)
       uses[key] = uses[key] or {}
       table.insert(uses[key], {face = f, dir = a < b and 1 or -1})
     end
@@ -368,7 +404,7 @@ local function surfaces_of(path, loops, order, line_of)
         local loop = loops[f]
         for k = 1, #loop do
           local a, b = loop[k], loop[k % #loop + 1]
-          local u = uses[math.min(a, b) .. "-" .. math.max(a, b)]
+          local u = uses[key_of(f, k, a, b)]
           if #u == 2 then
             local mine, other = u[1], u[2]
             if mine.face ~= f then mine, other = other, mine end
@@ -404,12 +440,18 @@ local function bodies_of(path, data, groups, group)
       if not set[g] then set[g] = 0; list[#list + 1] = g end
       set[g] = set[g] + 1
     end
+    local twice = {}
     for _, g in ipairs(list) do
+      -- in a torus a film may bound a cell on both sides: its faces are listed twice (+ and -)
+      if data.torus and set[g] == 2 * #groups[g].faces then
+        set[g], twice[#twice + 1] = #groups[g].faces, g
+      end
       if set[g] ~= #groups[g].faces then
         fail(path, b.line, "body %d uses %d of the %d faces of one film (faces joined across "
              .. "edges of two faces); froth's bodies are bounded by whole films", id, set[g], #groups[g].faces)
       end
     end
+    for _, g in ipairs(twice) do list[#list + 1] = g end
     table.sort(list)
     list.volconst = b.volconst -- Evolver's volume convention (froth.cluster's bodies)
     bodies[#bodies + 1] = list
@@ -523,6 +565,23 @@ local function curves_of(data, vids, vid)
   return #curves > 0 and curves or nil
 end
 
+--- The period vectors of a torus model (rows of `periods`), which froth reads without walls,
+--- fixed vertices or boundaries.
+local function torus_periods(path, data, walls)
+  if not data.periods or #data.periods ~= 3 then
+    error("read: " .. path .. ": the torus model needs `periods` (three vectors)", 0)
+  end
+  if #walls > 0 or next(data.boundaries) then
+    error("read: " .. path .. ": constraints and boundaries in the torus model are outside the "
+          .. ".fe subset froth reads", 0)
+  end
+  for id, v in pairs(data.vertices) do
+    if v.fixed then fail(path, v.line, "vertex %d is fixed: fixed vertices in the torus model are "
+                         .. "outside the .fe subset froth reads", id) end
+  end
+  return data.periods
+end
+
 --- The cluster of an Evolver datafile's text (froth.read reads the file, with its limits, and
 --- calls this; path names the file in messages). opts must be empty: an .fe file says its
 --- fixed vertices and its walls (constraints) itself.
@@ -551,8 +610,9 @@ function M.from_text(text, path, opts)
     end
   end
   local order = kept_faces(path, data)
-  local loops = {}
-  for _, id in ipairs(order) do loops[id] = face_vertices(path, data, id, data.faces[id]) end
+  local loops, offsets = {}, {}
+  for _, id in ipairs(order) do loops[id], offsets[id] = face_vertices(path, data, id, data.faces[id]) end
+  local L = data.torus and torus_periods(path, data, walls)
   -- Vertices in id order (ids may have gaps, as Evolver allows), those the kept faces use.
   local used, vids = {}, {}
   for _, id in ipairs(order) do for _, v in ipairs(loops[id]) do used[v] = true end end
@@ -571,7 +631,12 @@ function M.from_text(text, path, opts)
   end
   local line_of = {}
   for id, face in pairs(data.faces) do line_of[id] = face.line end
-  local groups, group, flip = surfaces_of(path, loops, order, line_of)
+  local edge_ids
+  if L then
+    edge_ids = {}
+    for _, id in ipairs(order) do edge_ids[id] = data.faces[id].loop end
+  end
+  local groups, group, flip = surfaces_of(path, loops, order, line_of, edge_ids)
   -- Triangles: a face of more than 3 vertices gets its centroid as a new vertex (Evolver's).
   local surfaces = {}
   for gi, g in ipairs(groups) do
@@ -585,6 +650,15 @@ function M.from_text(text, path, opts)
       end
       local loop = {}
       for k, v in ipairs(loops[fid]) do loop[k] = vid[v] end
+      if L then -- each corner where the face has it (froth.cluster merges the images again)
+        for k, v in ipairs(loops[fid]) do
+          local x, o = position[v], offsets[fid][k]
+          V[#V + 1] = {x[1] + o[1] * L[1][1] + o[2] * L[2][1] + o[3] * L[3][1],
+                       x[2] + o[1] * L[1][2] + o[2] * L[2][2] + o[3] * L[3][2],
+                       x[3] + o[1] * L[1][3] + o[2] * L[2][3] + o[3] * L[3][3]}
+          loop[k] = #V
+        end
+      end
       if flip[fid] then
         local r = {}
         for k = #loop, 1, -1 do r[#r + 1] = loop[k] end
@@ -604,7 +678,7 @@ function M.from_text(text, path, opts)
   local bodies, volumes = bodies_of(path, data, groups, group)
   local c = froth.cluster{vertices = V, surfaces = surfaces, bodies = bodies,
                           walls = #walls > 0 and walls or nil, fixed = #fixed > 0 and fixed or nil,
-                          curves = curves_of(data, vids, vid)}
+                          curves = curves_of(data, vids, vid), period = L}
   -- Every vertex the datafile puts on a constraint must be held by its wall: froth attaches
   -- the borders of films to walls, not vertices inside a film.
   local records = c:vertices()
@@ -622,6 +696,15 @@ function M.from_text(text, path, opts)
     end
   end
   for b, v in pairs(volumes) do c:set_volume(b, v) end
+  if L and data.torus == "torus_filled" and #bodies > 0 then
+    -- Evolver's TORUS_FILLED: the last body is the rest of the box (its volume is not its own)
+    local rest = math.abs(L[1][1] * (L[2][2] * L[3][3] - L[2][3] * L[3][2])
+                          - L[1][2] * (L[2][1] * L[3][3] - L[2][3] * L[3][1])
+                          + L[1][3] * (L[2][1] * L[3][2] - L[2][2] * L[3][1]))
+    local targets = c:target_volumes()
+    for b = 1, #bodies - 1 do rest = rest - targets[b] end
+    if rest > 0 then c:set_volume(#bodies, rest) end
+  end
   return c
 end
 

@@ -130,6 +130,31 @@ do
   T.assert_near(d:volumes()[1], 1, 1e-12, "volume-exact SD takes a filled box's cells to their targets")
 end
 
+-- Evolver's torus model read: the octahedron across the box (TORUS, wraps per edge).
+do
+  local here = debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$") or "."
+  local c = froth.read(here .. "/../data/fe/octahedron_torus.fe")
+  T.assert_true(c:period() ~= nil, "read: a TORUS datafile is a periodic cluster")
+  T.assert_near(c:volumes()[1], 4 / 3 * 0.3 ^ 3, 1e-15, "read: the torus octahedron's volume")
+  T.assert_near(c:energy(), 4 * math.sqrt(3) * 0.3 ^ 2, 1e-14, "read: its area")
+  T.assert_near(c:target_volumes()[1], 0.04, 0, "read: its target volume")
+  local text = io.open(here .. "/../data/fe/octahedron_torus.fe"):read("a")
+  local path = os.tmpname() .. ".fe"
+  local f = io.open(path, "w")
+  f:write((text:gsub("\n1 1 3 %- %+ %*", "\n1 1 3 * + *"))) -- one wrap wrong: the loop opens
+  f:close()
+  T.check_error("its edge loop wraps around the torus", froth.read, path)
+  os.remove(path)
+  -- Evolver's own examples (evolver-doc), when installed: Kelvin's and Weaire-Phelan's cells.
+  local ex = "/usr/share/doc/evolver/examples/"
+  if io.open(ex .. "twointor.fe") then
+    local k = froth.read(ex .. "twointor.fe")
+    T.assert_near(2 * k:energy() / 2 / 0.5 ^ (2 / 3), flat_cost, 1e-12, "twointor.fe: Kelvin's flat cells")
+    local w = froth.read(ex .. "phelanc.fe")
+    T.assert_near(sum(w:target_volumes()), 8, 1e-12, "phelanc.fe (TORUS_FILLED): the last body is the rest of the box")
+  end
+end
+
 -- Random foams.
 do
   local c = froth.foam{n = 8, seed = 3, h = 0.3}
