@@ -127,6 +127,20 @@ std::string state_text(const ClusterState& s) {
     for (std::size_t b = 0; b < s.spec.volconst.size(); ++b)
         if (s.spec.volconst[b])
             out << static_cast<int>(b + 1) << ' ' << *s.spec.volconst[b] << '\n';
+    // Format 3: the period of a periodic cluster and its facet corners' lattice offsets.
+    out << "period " << (s.spec.period ? 1 : 0) << '\n';
+    if (s.spec.period) {
+        for (int k = 0; k < 3; ++k)
+            out << (*s.spec.period)(0, k) << ' ' << (*s.spec.period)(1, k) << ' '
+                << (*s.spec.period)(2, k) << '\n';
+        for (const ClusterSpec::Surface& surface : s.spec.surfaces) {
+            out << "offsets " << static_cast<int>(surface.offsets.size()) << '\n';
+            for (const auto& corners : surface.offsets)
+                for (int a = 0; a < 3; ++a)
+                    for (int d = 0; d < 3; ++d)
+                        out << corners[a][d] << (a == 2 && d == 2 ? '\n' : ' ');
+        }
+    }
     out << "history " << static_cast<int>(s.history.size()) << '\n';
     for (const NamedValues& a : s.history) {
         out << "array " << a.name << ' ' << static_cast<int>(a.values.size()) << '\n';
@@ -217,6 +231,25 @@ void read_history(io::Tokens& t, ClusterState& s) {
     }
 }
 
+void read_period(io::Tokens& t, ClusterState& s) {
+    t.expect("period");
+    if (t.integer("period flag", 0, 1) == 0) return;
+    Eigen::Matrix3d L;
+    for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 3; ++d) L(d, k) = t.real("period coordinate");
+    s.spec.period = L;
+    for (ClusterSpec::Surface& surface : s.spec.surfaces) {
+        t.expect("offsets");
+        surface.offsets.resize(t.count("facet offsets", 9));
+        if (surface.offsets.size() != surface.triangles.size())
+            t.fail("a surface has " + std::to_string(surface.offsets.size()) + " offset triples for " +
+                   std::to_string(surface.triangles.size()) + " facets");
+        for (auto& corners : surface.offsets)
+            for (Offset& k : corners)
+                for (int& d : k) d = static_cast<int>(t.integer("lattice offset", -kMaxOffset, kMaxOffset));
+    }
+}
+
 void read_body(io::Tokens& t, ClusterState& s) {
     const std::size_t n_surfaces = s.spec.surfaces.size();
     std::vector<int> faces(t.count("surfaces of a body", 1));
@@ -277,6 +310,7 @@ ClusterState parse_body(io::Tokens& t, long long version) {
             v = t.real("volconst");
         }
     }
+    if (version >= 3) read_period(t, s);
     read_history(t, s);
     t.expect("end");
     if (!t.at_end()) t.fail("text after 'end'");
@@ -286,9 +320,6 @@ ClusterState parse_body(io::Tokens& t, long long version) {
 } // namespace
 
 ClusterState capture_state(const Cluster& c, std::vector<NamedValues> history) {
-    if (c.periodic())
-        throw InvalidInput("save: periodic clusters cannot be saved yet (the state format has "
-                           "no period); write .vtu to look at one");
     ClusterState s;
     s.spec = cluster_spec(c);
     s.spec.walls.clear(); // saved by their parameters, user walls and curves by name

@@ -21,8 +21,9 @@
 
 namespace froth {
 
-/// 2 adds the bodies' volconst (format 1 files are read as bodies without one).
-inline constexpr int kStateFormatVersion = 2;
+/// 2 adds the bodies' volconst (format 1 files are read as bodies without one); 3 the period and
+/// facet offsets of a periodic cluster (formats 1 and 2 are read as clusters in space).
+inline constexpr int kStateFormatVersion = 3;
 
 /// The saved state, between a Cluster and its file.
 struct ClusterState {

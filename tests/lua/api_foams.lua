@@ -193,7 +193,17 @@ local k = froth.kelvin_foam{h = 0.3}
 k:set_volume(1, 1.5)
 T.check_error("their target volumes must add up to its volume 2", k.minimize, k, {})
 T.check_error("periodic clusters are not supported yet", k.equiangulate, k)
-T.check_error("periodic clusters cannot be saved yet", k.save, k, "out/kelvin.froth")
+do -- a saved periodic cluster loads with its period and continues bit for bit
+  local w = froth.weaire_phelan_foam{h = 0.3}
+  w:minimize{max_iterations = 10}
+  w:save("out/weaire_phelan.froth")
+  local l = froth.load("out/weaire_phelan.froth")
+  T.assert_equal(l:period()[3][3], w:period()[3][3], "load: the period")
+  T.assert_equal(l:volumes()[1], w:volumes()[1], "load: the volumes of the cells")
+  w:minimize{max_iterations = 10}
+  l:minimize{max_iterations = 10}
+  T.assert_equal(l:energy(), w:energy(), "load: minimize continues bit for bit")
+end
 T.check_error("cannot be written as .msh", k.write, k, "out/kelvin.msh")
 T.check_error("two sites coincide", froth.voronoi_foam,
               {sites = {{0, 0, 0}, {1, 1, 1}}, period = unit, h = 0.3})

@@ -222,8 +222,8 @@ end
 refused(good:sub(1, #good // 2), "truncated", "is truncated or corrupted")
 refused(good:sub(1, 200) .. "7" .. good:sub(202), "one byte changed", "is truncated or corrupted")
 refused("$MeshFormat\n4.1 0 8\n", "an MSH file", "is not a froth state file")
-refused(good:gsub("^froth%-state 2", "froth-state 9"), "a future version",
-        "was written by a newer froth (format 9; this one reads 2)")
+refused(good:gsub("^froth%-state 3", "froth-state 9"), "a future version",
+        "was written by a newer froth (format 9; this one reads 3)")
 refused(rewritten(good, function(b) return (b:gsub("\nsurface (%S+) (%d+)\n%d+", "\nsurface %1 %2\n999999", 1)) end),
         "a vertex id out of range", "line")
 refused(rewritten(good, function(b) return (b:gsub("\nvertices %d+", "\nvertices 2000000000", 1)) end),
