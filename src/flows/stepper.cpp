@@ -121,6 +121,7 @@ StepReport TimeStepper::step(Cluster& c, Flow flow, double tau, bool project_ont
                              double tolerance) {
     if (!(std::isfinite(tau) && tau > 0))
         throw InvalidInput("step: tau must be positive and finite, got " + fmt(tau));
+    if (scheme(flow).holds_volumes(c)) check_filled_box_targets(c, "step");
     if (!scheme(flow).iterative(c)) return step_once(c, flow, tau, project_onto_walls, tolerance);
     const std::vector<Vec3> X = c.positions();
     const double t = c.time();

@@ -240,6 +240,10 @@ void Cluster::check_period(const ClusterSpec& spec) const {
                            fmt(L.determinant()) + "); a periodic box needs three independent ones");
     if (!spec.walls.empty())
         throw InvalidInput("cluster: a periodic cluster cannot have walls (not supported)");
+    if (!spec.curves.empty() || std::any_of(spec.volconst.begin(), spec.volconst.end(),
+                                            [](const std::optional<double>& v) { return v.has_value(); }))
+        throw InvalidInput("cluster: a periodic cluster cannot have wire curves or volconst "
+                           "(not supported)");
     for (std::size_t i = 0; i < spec.surfaces.size(); ++i) {
         const auto& s = spec.surfaces[i];
         if (!s.offsets.empty() && s.offsets.size() != s.triangles.size())

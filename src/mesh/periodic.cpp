@@ -65,6 +65,8 @@ std::vector<int> identify_periodic_images(ClusterSpec& spec, const Eigen::Matrix
     const double scale = L.colwise().norm().prod();
     if (!L.allFinite() || !(std::abs(L.determinant()) > 1e-12 * scale))
         throw InvalidInput("periodic: the period vectors must be finite and linearly independent");
+    if (!spec.curve_points.empty() || !spec.attachments.empty())
+        throw InvalidInput("periodic: wire curves and wall attachments are not supported");
     const Eigen::Matrix3d Linv = L.inverse();
     // In lattice coordinates u = L^-1 x a point is r = u - k with k = floor(u + tol): r in
     // [-tol, 1 - tol), so images of one point get the same r however round-off placed them.

@@ -192,6 +192,7 @@ T.check_error("names surface 1 more than twice", froth.cluster,
 local k = froth.kelvin_foam{h = 0.3}
 k:set_volume(1, 1.5)
 T.check_error("their target volumes must add up to its volume 2", k.minimize, k, {})
+T.check_error("step: the cells fill the periodic box", k.step, k, {flow = "sd", tau = 1e-3})
 T.check_error("periodic clusters are not supported yet", k.equiangulate, k)
 do -- a saved periodic cluster loads with its period and continues bit for bit
   local w = froth.weaire_phelan_foam{h = 0.3}
