@@ -407,8 +407,29 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
         o.error("on_step", "must be a function");
     lua_pop(L, 1);
     e.watch = read_watch_options(L, o);
+    e.transitions = o.boolean("transitions", true);
     e.fixed_point = read_fixed_point(L, o, "evolve: fixed_point");
     return e;
+}
+
+/// evolve's `events`: {{kind, where, t, step, body, neighbours, energy_before, energy_after}, ...}
+void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& events) {
+    lua_createtable(L, static_cast<int>(events.size()), 0);
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const TransitionEvent& e = events[i];
+        lua_createtable(L, 0, 8);
+        lua_pushstring(L, e.kind.c_str());
+        lua_setfield(L, -2, "kind");
+        lua_pushstring(L, e.where.c_str());
+        lua_setfield(L, -2, "where");
+        set_number(L, "t", e.t);
+        set_integer(L, "step", e.step);
+        set_integer(L, "body", e.body + 1);
+        set_integer(L, "neighbours", e.neighbours);
+        set_number(L, "energy_before", e.energy_before);
+        set_number(L, "energy_after", e.energy_after);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+    }
 }
 
 int l_evolve(lua_State* L) {
@@ -457,6 +478,8 @@ int l_evolve(lua_State* L) {
             set_number(L, "t", r.event->t);
             lua_setfield(L, -2, "event");
         }
+        push_transition_events(L, r.events);
+        lua_setfield(L, -2, "events");
         return 1;
     });
 }

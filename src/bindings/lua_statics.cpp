@@ -4,6 +4,7 @@
 #include "bindings/lua_cluster.h"
 #include "bindings/luax.h"
 #include "flows/minimize.h"
+#include "mesh/transitions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +135,34 @@ int l_refine(lua_State* L) {
     });
 }
 
+/// c:pop_body(b) -> {body, neighbours, point, where, removed_vertices, removed_facets,
+/// energy_before, energy_after}: Evolver's `pop` of a vanishing cell.
+int l_pop_body(lua_State* L) {
+    ClusterHandle& h = self(L);
+    ChangeGuard changing(L, h, "pop_body");
+    if (h.cluster.n_bodies() == 0) return luaL_error(L, "pop_body: the cluster has no bodies");
+    const int b = check_id(L, 2, h.cluster.n_bodies(), "body", "bodies");
+    return guarded(L, [&] {
+        TransitionRecord record;
+        Cluster popped = pop_body(h.cluster, b, &record); // throws before anything changes
+        const double before = energy(h.cluster), after = energy(popped);
+        h.cluster = std::move(popped);
+        h.stepper.reset();
+        lua_createtable(L, 0, 8);
+        set_integer(L, "body", b + 1);
+        set_integer(L, "neighbours", record.neighbours);
+        push_numbers(L, std::vector<double>{record.point.x(), record.point.y(), record.point.z()});
+        lua_setfield(L, -2, "point");
+        lua_pushstring(L, record.where.c_str());
+        lua_setfield(L, -2, "where");
+        set_integer(L, "removed_vertices", record.removed_vertices);
+        set_integer(L, "removed_facets", record.removed_facets);
+        set_number(L, "energy_before", before);
+        set_number(L, "energy_after", after);
+        return 1;
+    });
+}
+
 /// c:equiangulate{max_sweeps} -> {flips, sweeps, volume_change}
 int l_equiangulate(lua_State* L) {
     ClusterHandle& h = self(L);
@@ -163,6 +192,7 @@ int l_equiangulate(lua_State* L) {
 const luaL_Reg methods[] = {
     {"refine", l_refine},
     {"equiangulate", l_equiangulate},
+    {"pop_body", l_pop_body},
     {"minimize", l_minimize},
     {"pressures", l_pressures},
     {"body_report", l_body_report},

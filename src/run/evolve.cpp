@@ -6,6 +6,7 @@
 #include "io/history.h"
 #include "io/state_file.h"
 #include "io/vtk_writer.h"
+#include "mesh/transitions.h"
 
 #include <algorithm>
 #include <chrono>
@@ -46,10 +47,6 @@ void check_options(const EvolveOptions& o) {
                            "[0, 60) degrees and a step count >= 0");
 }
 
-HistoryRow history_row(const Report& r, double tau) {
-    return {r.t, tau, r.energy, r.volume_loss, r.volumes};
-}
-
 void write_history(const std::string& stem, const std::vector<HistoryRow>& rows) {
     write_history_csv(stem + ".csv", rows);
     write_history_svg(stem + ".svg", rows, "froth: energy over time");
@@ -71,6 +68,7 @@ class Run {
     Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o)
         : c_(c), stepper_(stepper), o_(o), watch_(o.watch), t_start_(c.time()),
           t_end_(c.time() + o.duration), uncrossed_(c.positions()), uncrossed_t_(c.time()) {
+        for (int b = 0; b < c.n_bodies(); ++b) original_body_.push_back(b);
         r_.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
         if (!o.output.empty()) {
             series_ = std::make_unique<PvdSeries>(o.output);
@@ -217,10 +215,21 @@ class Run {
         if (!o_.history.empty()) history_.push_back(history_row(s, s.tau));
     }
 
-    /// True if the watch saw a topology change coming; a crossing state is not a valid one, so
-    /// then the cluster returns to the last state that passed the crossing test.
+    /// A history row with the volumes in the columns of the bodies at the start of the run
+    /// (0 for the popped ones).
+    HistoryRow history_row(const Report& r, double tau) const {
+        std::vector<double> volumes(n_start_bodies_, 0.0);
+        for (std::size_t b = 0; b < r.volumes.size(); ++b) volumes[original_body_[b]] = r.volumes[b];
+        return {r.t, tau, r.energy, r.volume_loss, std::move(volumes)};
+    }
+
+    /// True if the watch saw a topology change coming that it could not get past; a crossing
+    /// state is not a valid one, so then the cluster returns to the last state that passed the
+    /// crossing test. Vanishing bodies pop (EvolveOptions::transitions) while they can.
     bool watch_for_topology() {
         std::optional<TopologyEvent> e = watch_.check(c_, r_.steps);
+        while (e && e->kind == "vanishing body" && o_.transitions && pop(*e))
+            e = watch_.check(c_, r_.steps);
         if (!e) {
             if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
             return false;
@@ -233,6 +242,36 @@ class Run {
             e->t = uncrossed_t_;
         }
         r_.event = std::move(e);
+        return true;
+    }
+
+    /// Pops the vanishing body of event e; false (and the reason added to e's message) if it
+    /// cannot pop or the pop would raise the energy. The stepper starts afresh on the new mesh.
+    bool pop(TopologyEvent& e) {
+        TransitionRecord record;
+        std::optional<Cluster> popped;
+        try {
+            popped.emplace(pop_body(c_, e.body, &record));
+        } catch (const TopologyError& x) {
+            std::string why = x.what();
+            if (why.rfind("pop_body: ", 0) == 0) why.erase(0, 10);
+            e.message += "; it cannot pop: " + why;
+            return false;
+        }
+        const double before = energy(c_), after = energy(*popped);
+        if (after > before) {
+            e.message += "; popping it would raise the energy from " + fmt(before) + " to " +
+                         fmt(after);
+            return false;
+        }
+        const int original = original_body_[e.body];
+        r_.events.push_back({record.kind, record.where, c_.time(), r_.steps, original,
+                             record.neighbours, before, after});
+        original_body_.erase(original_body_.begin() + e.body);
+        c_ = std::move(*popped);
+        stepper_.reset();
+        uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
+        if (!o_.history.empty()) history_.push_back(history_row(make_report(c_), 0));
         return true;
     }
 
@@ -273,6 +312,8 @@ class Run {
     std::vector<HistoryRow> history_;
     std::vector<Vec3> uncrossed_; // the last state that passed the crossing test
     double uncrossed_t_;
+    const int n_start_bodies_ = c_.n_bodies();
+    std::vector<int> original_body_; // the bodies' ids at the start of the run
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();

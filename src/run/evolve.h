@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace froth {
 
@@ -51,6 +52,12 @@ struct EvolveOptions {
     bool project_onto_walls = false;
     /// What counts as the approach of a topology change (run/topology_watch.h).
     WatchOptions watch;
+    /// Topological transitions (mesh/transitions.h): a body the watch sees vanishing pops
+    /// (Evolver's `pop`) and the run goes on; false stops the run there instead. A pop that
+    /// cannot be made (the body has more than four neighbouring cells, is all the cluster
+    /// has, meets a wall; or the pop would raise the energy) ends the run as without it, the
+    /// reason added to the message.
+    bool transitions = true;
     /// The r > 1 iteration of every step (flows/stepper.h).
     FixedPointOptions fixed_point;
     /// Surface diffusion holds the bodies at their target volumes exactly (the default;
@@ -61,6 +68,17 @@ struct EvolveOptions {
     /// The order in time of the steps, 1 or 2 (TimeStepper::set_order; the first step of
     /// order 2 is of order 1).
     int order = 1;
+};
+
+/// A topological transition evolve made (EvolveOptions::transitions).
+struct TransitionEvent {
+    std::string kind;  ///< "pop body"
+    std::string where; ///< what and where, for people (TransitionRecord::where)
+    double t = 0;      ///< the model time of the transition
+    int step = 0;      ///< it followed this step of the run (1-based)
+    int body = -1;     ///< the body that went, as numbered at the start of the run (0-based)
+    int neighbours = 0; ///< the cells around it (the outside counts as one)
+    double energy_before = 0, energy_after = 0;
 };
 
 struct EvolveResult {
@@ -75,6 +93,7 @@ struct EvolveResult {
     /// "no convergence: <...>" (the r > 1 fixed-point iteration of a step failed)
     std::string stop_reason;
     std::optional<TopologyEvent> event; ///< set when the watch or a failing step stopped the run
+    std::vector<TransitionEvent> events; ///< the transitions made, in order
 };
 
 /// A step that fails geometrically (GeometryError, SolverError: a collapsing facet, a singular

@@ -19,7 +19,7 @@ std::optional<TopologyEvent> vanishing_body(const Cluster& c, double fraction) {
             return TopologyEvent{"vanishing body",
                                  "body " + std::to_string(b + 1) + " is vanishing: volume " +
                                      fmt(V[b]) + " of initially " + fmt(v0) + at_time(c),
-                                 c.time()};
+                                 c.time(), static_cast<int>(b)};
     }
     return std::nullopt;
 }

@@ -31,6 +31,7 @@ struct TopologyEvent {
     std::string kind;    ///< "vanishing body", "collapsing edge", "collapsing facet", "self-intersection"
     std::string message; ///< what, where and when, for people
     double t = 0;        ///< model time of the state that is kept
+    int body = -1;       ///< "vanishing body": which (0-based)
 };
 
 class TopologyWatch {
