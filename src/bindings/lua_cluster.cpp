@@ -346,6 +346,7 @@ WatchOptions read_watch_options(lua_State* L, Options& o) {
         w.min_volume_fraction = wo.number("min_volume_fraction", w.min_volume_fraction);
         w.min_edge_fraction = wo.number("min_edge_fraction", w.min_edge_fraction);
         w.min_facet_angle = wo.number("min_facet_angle", w.min_facet_angle);
+        w.min_line_fraction = wo.number("min_line_fraction", w.min_line_fraction);
         w.self_intersection_every =
             static_cast<int>(wo.integer("self_intersection_every", w.self_intersection_every));
         wo.finish();
@@ -412,7 +413,8 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     return e;
 }
 
-/// evolve's `events`: {{kind, where, t, step, body, neighbours, energy_before, energy_after}, ...}
+/// evolve's `events`: {{kind, where, t, step, energy_before, energy_after; pops: body,
+/// neighbours; T1s: line, cells}, ...}
 void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& events) {
     lua_createtable(L, static_cast<int>(events.size()), 0);
     for (std::size_t i = 0; i < events.size(); ++i) {
@@ -424,8 +426,15 @@ void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& ev
         lua_setfield(L, -2, "where");
         set_number(L, "t", e.t);
         set_integer(L, "step", e.step);
-        set_integer(L, "body", e.body + 1);
-        set_integer(L, "neighbours", e.neighbours);
+        if (e.body >= 0) {
+            set_integer(L, "body", e.body + 1);
+            set_integer(L, "neighbours", e.neighbours);
+        }
+        if (e.line >= 0) {
+            set_integer(L, "line", e.line + 1);
+            push_integers(L, std::vector<int>{e.cells[0] + 1, e.cells[1] + 1});
+            lua_setfield(L, -2, "cells");
+        }
         set_number(L, "energy_before", e.energy_before);
         set_number(L, "energy_after", e.energy_after);
         lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));

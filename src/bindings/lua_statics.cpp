@@ -163,6 +163,35 @@ int l_pop_body(lua_State* L) {
     });
 }
 
+/// c:t1(line) -> {line, cells, point, where, removed_vertices, energy_before, energy_after}:
+/// a triple line between two quadruple points becomes a triangular film.
+int l_t1(lua_State* L) {
+    ClusterHandle& h = self(L);
+    ChangeGuard changing(L, h, "t1");
+    const int n = static_cast<int>(h.cluster.triple_lines().size());
+    if (n == 0) return luaL_error(L, "t1: the cluster has no triple lines");
+    const int line = check_id(L, 2, n, "triple line", "triple lines");
+    return guarded(L, [&] {
+        TransitionRecord record;
+        Cluster changed = t1_line_to_film(h.cluster, line, &record); // throws before any change
+        const double before = energy(h.cluster), after = energy(changed);
+        h.cluster = std::move(changed);
+        h.stepper.reset();
+        lua_createtable(L, 0, 7);
+        set_integer(L, "line", line + 1);
+        push_integers(L, std::vector<int>{record.cells[0] + 1, record.cells[1] + 1});
+        lua_setfield(L, -2, "cells");
+        push_numbers(L, std::vector<double>{record.point.x(), record.point.y(), record.point.z()});
+        lua_setfield(L, -2, "point");
+        lua_pushstring(L, record.where.c_str());
+        lua_setfield(L, -2, "where");
+        set_integer(L, "removed_vertices", record.removed_vertices);
+        set_number(L, "energy_before", before);
+        set_number(L, "energy_after", after);
+        return 1;
+    });
+}
+
 /// c:equiangulate{max_sweeps} -> {flips, sweeps, volume_change}
 int l_equiangulate(lua_State* L) {
     ClusterHandle& h = self(L);
@@ -193,6 +222,7 @@ const luaL_Reg methods[] = {
     {"refine", l_refine},
     {"equiangulate", l_equiangulate},
     {"pop_body", l_pop_body},
+    {"t1", l_t1},
     {"minimize", l_minimize},
     {"pressures", l_pressures},
     {"body_report", l_body_report},

@@ -9,10 +9,10 @@
 // so the cluster is valid as it stands and the flow smooths the rest.
 #include "mesh/transitions.h"
 
+#include "mesh/transition_surgery.h"
+
 #include "core/errors.h"
 #include "core/format.h"
-
-#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -100,41 +100,8 @@ UnwrappedBody unwrap_body(const Cluster& c, int b) {
             }
         }
     }
-    Eigen::Matrix3d inverse = Eigen::Matrix3d::Zero();
-    if (c.periodic()) inverse = c.period().inverse();
-    for (const auto& [v, u] : w.u) {
-        const Vec3 k = inverse * (u - X[v]);
-        w.d[v] = {static_cast<int>(std::lround(k.x())), static_cast<int>(std::lround(k.y())),
-                  static_cast<int>(std::lround(k.z()))};
-    }
+    for (const auto& [v, u] : w.u) w.d[v] = surgery::lattice_offset(c, u, X[v]);
     return w;
-}
-
-/// In surface `name` the facets at P (given as their opposite edges x -> y, P first in the
-/// facet's order) must form one fan: a path or a cycle of link edges. Two fans would pinch
-/// the film at P.
-void check_one_fan(const std::vector<std::pair<int, int>>& link, int surface, int b) {
-    if (link.empty()) return;
-    std::map<int, int> next, in;
-    for (const auto& [x, y] : link) {
-        if (!next.emplace(x, y).second || ++in[y] > 1)
-            throw TopologyError(body_name(b) + ": collapsing it would fold surface " +
-                                std::to_string(surface + 1) + " over the point; refine the mesh "
-                                "around the body first");
-    }
-    int start = link.front().first; // a path starts where nothing comes in; a cycle anywhere
-    for (const auto& [x, y] : link)
-        if (!in.count(x)) start = x;
-    std::size_t walked = 0;
-    for (int v = start; next.count(v) && walked < link.size();) {
-        v = next[v];
-        ++walked;
-        if (v == start) break; // round a closed fan
-    }
-    if (walked != link.size())
-        throw TopologyError(body_name(b) + ": collapsing it would pinch surface " +
-                            std::to_string(surface + 1) + " at the point (its facets there would "
-                            "form more than one fan); refine the mesh around the body first");
 }
 
 /// The expected number of junction edges at a Plateau point among F cells.
@@ -206,7 +173,7 @@ Cluster pop_body(const Cluster& c, int b, TransitionRecord* record) {
             out.triangles.push_back(nt);
             if (spec.period) out.offsets.push_back(k);
         }
-        check_one_fan(link, si, b);
+        surgery::check_one_fan(link, si, body_name(b));
         if (out.triangles.empty()) continue;
         surface_id[si] = static_cast<int>(spec.surfaces.size());
         kept_surfaces.push_back(si);
@@ -231,34 +198,9 @@ Cluster pop_body(const Cluster& c, int b, TransitionRecord* record) {
     for (int v = 0; v < n; ++v)
         if (id[v] >= 0) V[id[v]] = c.position(v);
     V[p_id] = P;
-    std::vector<int> used(V.size(), -1);
-    for (const auto& s : spec.surfaces)
-        for (const Tri& t : s.triangles)
-            for (int v : t) used[v] = 0;
-    int count = 0;
-    for (std::size_t v = 0; v < V.size(); ++v)
-        if (used[v] == 0) used[v] = count++, spec.vertices.push_back(V[v]);
-    for (auto& s : spec.surfaces)
-        for (Tri& t : s.triangles)
-            for (int& v : t) v = used[v];
-    const auto new_vertex = [&](int old) { return id[old] < 0 ? -1 : used[id[old]]; };
-
-    spec.walls = c.walls();
-    for (const auto& [v, wall] : c.wall_attachments()) spec.attachments.push_back({new_vertex(v), wall});
-    for (int v : c.fixed_vertices()) spec.fixed.push_back(new_vertex(v));
-    spec.curves = c.curves();
-    for (CurvePoint cp : c.curve_points()) {
-        cp.vertex = new_vertex(cp.vertex);
-        spec.curve_points.push_back(cp);
-    }
-
-    std::optional<Cluster> r;
-    try {
-        r.emplace(std::move(spec));
-    } catch (const Error& e) {
-        throw TopologyError(body_name(b) + ": the cluster after its collapse is not valid: " +
-                            e.what());
-    }
+    const std::vector<int> used = surgery::keep_used_vertices(spec, V);
+    surgery::copy_vertex_lists(c, [&](int old) { return id[old] < 0 ? -1 : used[id[old]]; }, spec);
+    std::optional<Cluster> r(surgery::rebuild(std::move(spec), body_name(b), "its collapse"));
     const int p_new = used[p_id];
     if (p_new >= 0 &&
         static_cast<int>(r->vertex_junction_edges(p_new).size()) != plateau_junction_edges(F))

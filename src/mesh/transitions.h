@@ -12,11 +12,13 @@ namespace froth {
 
 /// What a transition did, for event lists and messages.
 struct TransitionRecord {
-    std::string kind;    ///< "pop body"
+    std::string kind;    ///< "pop body", "T1"
     std::string where;   ///< for people: "body 3 (volume 1e-05, 4 neighbouring cells) at (x, y, z)"
-    int body = -1;       ///< the body that vanished (0-based, its id before the pop)
+    int body = -1;       ///< pop: the body that vanished (0-based, its id before the pop)
+    int line = -1;       ///< T1: the triple line that became a film (0-based, before)
+    std::array<int, 2> cells{-1, -1}; ///< T1: the bodies the new film lies between (-1: outside)
     Vec3 point = Vec3::Zero(); ///< where it collapsed
-    int neighbours = 0;  ///< the cells around it (the outside counts as one)
+    int neighbours = 0;  ///< pop: the cells around it (the outside counts as one)
     int removed_vertices = 0, removed_facets = 0;
 };
 
@@ -37,5 +39,23 @@ struct TransitionRecord {
 /// the cluster has, or whose collapse would pinch a neighbouring film at the point (a mesh too
 /// coarse around it).
 Cluster pop_body(const Cluster& c, int body, TransitionRecord* record = nullptr);
+
+/// The T1 of foams in 3D (the I -> H transition): triple line `line`, a chain of junction
+/// edges between two distinct quadruple points a and b, with cells A, B, C around it and a
+/// fourth cell D at a, E at b (D != E), becomes a small triangular film between D and E. Its
+/// three corners are new quadruple points, one on each of the line's films (A|B, B|C, C|A),
+/// in the plane through the line's midpoint normal to it, at distance side / sqrt(3) from
+/// it, side = the largest of the line's length, half the mean length of the edges at a and
+/// b, and min_side; its edges are new triple lines (D, E, A), (D, E, B), (D, E, C). The line's
+/// films lose it (their facets along it go); each film of D at a and of E at b is split at a
+/// and b between two of the new corners. The new film takes the tension, anisotropy and
+/// mobility of the first film of D at a, and is the last surface; bodies, their reference and
+/// target volumes are kept (the surgery moves a volume of order side^3).
+/// 	hrow InvalidInput for a line id out of range; TopologyError (naming the line and why,
+/// nothing changed) for a closed line, one whose ends are not two distinct quadruple points,
+/// whose ends touch the same fourth cell (D = E), which meets walls, fixed or curve vertices,
+/// or whose films would be pinched or folded by the surgery (a mesh too coarse there).
+Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = nullptr,
+                        double min_side = 0);
 
 } // namespace froth

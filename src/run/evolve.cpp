@@ -42,7 +42,8 @@ void check_options(const EvolveOptions& o) {
     const WatchOptions& w = o.watch;
     if (!(w.min_volume_fraction >= 0 && w.min_volume_fraction < 1) ||
         !(w.min_edge_fraction >= 0 && w.min_edge_fraction < 1) ||
-        !(w.min_facet_angle >= 0 && w.min_facet_angle < 60) || w.self_intersection_every < 0)
+        !(w.min_facet_angle >= 0 && w.min_facet_angle < 60) || w.self_intersection_every < 0 ||
+        !(w.min_line_fraction >= 0 && w.min_line_fraction < 1))
         throw InvalidInput("evolve: watch thresholds must be fractions in [0, 1), an angle in "
                            "[0, 60) degrees and a step count >= 0");
 }
@@ -227,9 +228,18 @@ class Run {
     /// state is not a valid one, so then the cluster returns to the last state that passed the
     /// crossing test. Vanishing bodies pop (EvolveOptions::transitions) while they can.
     bool watch_for_topology() {
-        std::optional<TopologyEvent> e = watch_.check(c_, r_.steps);
-        while (e && e->kind == "vanishing body" && o_.transitions && pop(*e))
+        std::optional<TopologyEvent> e;
+        refused_.clear();
+        // A transition may leave the next one due; a bound keeps a cycle from running forever.
+        for (int made = 0;; ++made) {
+            if (o_.transitions && made < kMaxTransitionsPerStep && t1_shrinking_line()) continue;
             e = watch_.check(c_, r_.steps);
+            if (e && e->kind == "vanishing body" && o_.transitions &&
+                made < kMaxTransitionsPerStep && pop(*e))
+                continue;
+            break;
+        }
+        if (e && !refused_.empty()) e->message += "; " + refused_;
         if (!e) {
             if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
             return false;
@@ -243,6 +253,48 @@ class Run {
         }
         r_.event = std::move(e);
         return true;
+    }
+
+    /// A T1 on the shortest triple line between two quadruple points below min_line_fraction
+    /// of the mean edge; false if there is none or it cannot be made (then the reason is kept
+    /// for the message of the event that will follow, and the line is not tried again this
+    /// step).
+    bool t1_shrinking_line() {
+        const double limit = o_.watch.min_line_fraction * mean_edge_length(c_);
+        std::vector<int> skip;
+        for (;;) {
+            const std::optional<int> line = shrinking_triple_line(c_, limit, skip);
+            if (!line) return false;
+            TransitionRecord record;
+            try {
+                // the new film's edges must not be due for a T1 themselves
+                Cluster changed = t1_line_to_film(c_, *line, &record, 2 * limit);
+                const double before = energy(c_), after = energy(changed);
+                TransitionEvent event{record.kind, record.where, c_.time(), r_.steps, -1, 0,
+                                      before, after};
+                event.line = *line;
+                event.cells = record.cells;
+                for (int& k : event.cells)
+                    if (k >= 0) k = original_body_[k];
+                r_.events.push_back(std::move(event));
+                replace_cluster(std::move(changed));
+                return true;
+            } catch (const TopologyError& x) {
+                std::string why = x.what();
+                if (why.rfind("t1: ", 0) == 0) why.erase(0, 4);
+                refused_ = "no T1 could be made: " + why;
+                skip.push_back(*line);
+            }
+        }
+    }
+
+    /// The cluster after a transition: the stepper starts afresh, the state is the last one
+    /// without crossings, and the history gets a row for it (tau = 0).
+    void replace_cluster(Cluster changed) {
+        c_ = std::move(changed);
+        stepper_.reset();
+        uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
+        if (!o_.history.empty()) history_.push_back(history_row(make_report(c_), 0));
     }
 
     /// Pops the vanishing body of event e; false (and the reason added to e's message) if it
@@ -268,10 +320,7 @@ class Run {
         r_.events.push_back({record.kind, record.where, c_.time(), r_.steps, original,
                              record.neighbours, before, after});
         original_body_.erase(original_body_.begin() + e.body);
-        c_ = std::move(*popped);
-        stepper_.reset();
-        uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
-        if (!o_.history.empty()) history_.push_back(history_row(make_report(c_), 0));
+        replace_cluster(std::move(*popped));
         return true;
     }
 
@@ -314,6 +363,8 @@ class Run {
     double uncrossed_t_;
     const int n_start_bodies_ = c_.n_bodies();
     std::vector<int> original_body_; // the bodies' ids at the start of the run
+    std::string refused_;            // why a due T1 could not be made in this step
+    static constexpr int kMaxTransitionsPerStep = 64;
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();

@@ -6,6 +6,7 @@
 #include "render/snapshot.h"
 #include "run/topology_watch.h"
 
+#include <array>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -72,13 +73,17 @@ struct EvolveOptions {
 
 /// A topological transition evolve made (EvolveOptions::transitions).
 struct TransitionEvent {
-    std::string kind;  ///< "pop body"
+    std::string kind;  ///< "pop body", "T1"
     std::string where; ///< what and where, for people (TransitionRecord::where)
     double t = 0;      ///< the model time of the transition
     int step = 0;      ///< it followed this step of the run (1-based)
-    int body = -1;     ///< the body that went, as numbered at the start of the run (0-based)
-    int neighbours = 0; ///< the cells around it (the outside counts as one)
+    int body = -1;     ///< pop: the body that went, as numbered at the start of the run (0-based)
+    int neighbours = 0; ///< pop: the cells around it (the outside counts as one)
     double energy_before = 0, energy_after = 0;
+    int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)
+    /// T1: the bodies the new film lies between, as numbered at the start of the run (-1: the
+    /// outside)
+    std::array<int, 2> cells{-1, -1};
 };
 
 struct EvolveResult {

@@ -4,6 +4,7 @@
 #include "core/format.h"
 #include "geometry/geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace froth {
@@ -66,6 +67,41 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
 }
 
 } // namespace
+
+double mean_edge_length(const Cluster& c) {
+    double sum = 0;
+    long count = 0;
+    for (const Surface& s : c.surfaces())
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const auto x = s.corners(c.positions(), f);
+            for (int k = 0; k < 3; ++k) sum += (x[(k + 1) % 3] - x[k]).norm();
+            count += 3;
+        }
+    return count ? sum / count : 0;
+}
+
+std::optional<int> shrinking_triple_line(const Cluster& c, double limit,
+                                         const std::vector<int>& skip) {
+    if (c.quadruple_points().size() < 2) return std::nullopt;
+    const auto quadruple = [&](int v) { return c.vertex_junction_edges(v).size() == 4; };
+    std::optional<int> shortest;
+    double best = limit;
+    const auto& lines = c.triple_lines();
+    for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
+        const TripleLine& tl = lines[l];
+        if (tl.closed || tl.vertices.front() == tl.vertices.back() ||
+            !quadruple(tl.vertices.front()) || !quadruple(tl.vertices.back()))
+            continue;
+        if (std::find(skip.begin(), skip.end(), l) != skip.end()) continue;
+        double length = 0;
+        for (std::size_t i = 1; i < tl.vertices.size() && length < best; ++i) {
+            const int a = tl.vertices[i - 1], b = tl.vertices[i];
+            length += (c.position(b) - c.position(a) + c.edge_shift(a, b)).norm();
+        }
+        if (length < best) best = length, shortest = l;
+    }
+    return shortest;
+}
 
 bool TopologyWatch::tests_crossings(int step) const {
     const int every = options_.self_intersection_every;

@@ -25,6 +25,9 @@ struct WatchOptions {
     double min_facet_angle = 0.5;
     /// Test for crossing facets (CGAL) every this many steps; 0 never.
     int self_intersection_every = 10;
+    /// A triple line between two quadruple points shorter than this fraction of the mean edge
+    /// length is shrinking to a point (shrinking_triple_line; evolve makes a T1 there).
+    double min_line_fraction = 0.2;
 };
 
 struct TopologyEvent {
@@ -33,6 +36,14 @@ struct TopologyEvent {
     double t = 0;        ///< model time of the state that is kept
     int body = -1;       ///< "vanishing body": which (0-based)
 };
+
+/// The mean length of the facets' edges (each counted once per facet).
+double mean_edge_length(const Cluster& c);
+
+/// The shortest triple line between two distinct quadruple points that is shorter than
+/// `limit` (0-based id), if any; lines in `skip` are passed over.
+std::optional<int> shrinking_triple_line(const Cluster& c, double limit,
+                                         const std::vector<int>& skip = {});
 
 class TopologyWatch {
   public:

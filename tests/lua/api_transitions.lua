@@ -99,4 +99,96 @@ for _, case in ipairs{{{0.5, 0, 0}, 2, "film"}, {{0, 0, 0}, 3, "triple line"},
                  case[3] .. ": and its quadruple points")
 end
 
+-- 4. T1 (I -> H): a thin band of three cells (latitude -0.2 .. 0.2 of the unit ball, three
+-- 120-degree wedges) between two caps. Their axis, a triple line between two quadruple
+-- points, shrinks under surface diffusion; evolve turns it into a film between the caps.
+local function band()
+  local solids = {}
+  for k = 0, 2 do
+    solids[k + 1] = {"ball", r = 1, angle = 2 * pi / 3, latitude = {-0.2, 0.2},
+                     rotate = {axis = {0, 0, 1}, angle = 2 * pi * k / 3}}
+  end
+  solids[4] = {"ball", r = 1, latitude = {0.2, pi / 2}}
+  solids[5] = {"ball", r = 1, latitude = {-pi / 2, -0.2}}
+  return froth.fragment{solids = solids, h = 0.12}
+end
+--- The triple line on the z axis (all its vertices there), or nil.
+local function axis_line(c)
+  for l, tl in ipairs(c:triple_lines()) do
+    local on = not tl.closed
+    for _, v in ipairs(tl.vertices) do
+      local x = c:vertex(v)
+      on = on and math.abs(x[1]) + math.abs(x[2]) < 1e-6
+    end
+    if on then return l end
+  end
+end
+
+local c = band()
+local lines0, quads0, films0 = #c:triple_lines(), #c:quadruple_points(), c:info().surfaces
+local V0 = c:volumes()
+local l = axis_line(c)
+T.check_error("t1: triple line " .. l .. ": the T1 would turn a facet", c.t1, c, l) -- 0.4 long
+c:evolve{flow = "sd", tau = 1e-3, steps = 10, progress = false, transitions = false} -- now ~0.02
+T.assert_true(l ~= nil, "the band has its axis line")
+local t1 = c:t1(l)
+T.assert_equal(t1.line, l, "t1: which line")
+T.assert_true((t1.cells[1] == 4 and t1.cells[2] == 5) or (t1.cells[1] == 5 and t1.cells[2] == 4),
+              "the new film lies between the caps", table.concat(t1.cells, ","))
+T.assert_equal(#c:triple_lines(), lines0 + 2, "one line goes, three come")
+T.assert_equal(#c:quadruple_points(), quads0 + 1, "two quadruple points become three")
+T.assert_equal(c:info().surfaces, films0 + 1, "one more film")
+T.assert_equal(axis_line(c), nil, "the axis line is gone")
+local caps = {}
+for _, s in ipairs(c:bodies()[4]) do caps[math.abs(s)] = true end
+local shared = false
+for _, s in ipairs(c:bodies()[5]) do shared = shared or caps[math.abs(s)] == true end
+T.assert_true(shared, "the caps now share a film")
+for b = 1, 5 do
+  T.assert_true(math.abs(c:volumes()[b] - V0[b]) < 0.02 * V0[b], "body " .. b .. " keeps its volume",
+                tostring(c:volumes()[b]))
+  T.assert_near(c:target_volumes()[b], V0[b], 1e-12, "and its target")
+end
+T.assert_near(t1.energy_after, c:energy(), 1e-12, "energy_after")
+
+local blocked = band()
+local rb = blocked:evolve{flow = "sd", tau = 1e-3, T = 0.03, progress = false, transitions = false}
+T.assert_equal(rb.event and rb.event.kind, "collapsing edge", "without transitions the axis collapses")
+T.assert_true(rb.t < 0.02, "early", tostring(rb.t))
+
+local flow = band()
+local rf = flow:evolve{flow = "sd", tau = 1e-3, T = 0.03, progress = false}
+T.assert_equal(rf.stop_reason, "T reached", "with transitions the run goes on", rf.stop_reason)
+T.assert_equal(#rf.events, 1, "one transition")
+local ev = rf.events[1] or {}
+T.assert_equal(ev.kind, "T1", "a T1")
+T.assert_true(ev.t > 0 and ev.t <= rb.t, "before the edge would have collapsed", tostring(ev.t))
+T.assert_true(ev.cells and ((ev.cells[1] == 4 and ev.cells[2] == 5) or
+              (ev.cells[1] == 5 and ev.cells[2] == 4)), "between the caps")
+T.assert_true(ev.energy_after < ev.energy_before, "the energy falls through the T1",
+              ("%.9g -> %.9g"):format(ev.energy_before or 0, ev.energy_after or 0))
+T.assert_true(rf.energy < ev.energy_after, "and goes on falling", tostring(rf.energy))
+T.assert_equal(#flow:quadruple_points(), quads0 + 1, "the H has three quadruple points")
+for b = 1, 5 do
+  T.assert_near(flow:volumes()[b], V0[b], 1e-9 * V0[b], "SD holds body " .. b .. " through it")
+end
+
+-- errors
+local db = froth.double_bubble{h = 0.3}
+T.check_error("t1: triple line 1 is a closed loop", db.t1, db, 1)
+T.check_error("triple line 2 does not exist (the cluster has triple lines 1..1)", db.t1, db, 2)
+T.check_error("t1: the cluster has no triple lines", s.t1, s, 1)
+local tb = froth.triple_bubble{h = 0.3}
+local X = T.positions(tb)
+T.check_error("the same cell (the outside) meets both its ends", tb.t1, tb, axis_line(tb))
+local meridian -- a line from pole to pole on the sphere: (lune, lune, outside), a wedge at both ends
+for l, tl in ipairs(tb:triple_lines()) do
+  local a, b = tb:vertex(tl.vertices[1]), tb:vertex(tl.vertices[#tl.vertices])
+  if l ~= axis_line(tb) and math.abs(a[1]) + math.abs(a[2]) + math.abs(b[1]) + math.abs(b[2]) < 1e-6 then
+    meridian = l
+  end
+end
+T.check_error(") meets both its ends; a film between it and itself cannot form", tb.t1, tb, meridian)
+T.assert_true(T.same_positions(tb, X) and #tb:triple_lines() == 4, "a refused T1 changes nothing")
+
 T.summary()

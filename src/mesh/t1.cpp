@@ -1,0 +1,396 @@
+// The T1 of 3D foams (transitions.h, t1_line_to_film): a shrinking triple line between two
+// quadruple points becomes a small triangular film (the I -> H transition).
+//
+// Before: cells A, B, C around the line a..b, its films A|B, B|C, C|A; at a the fourth cell D
+// with films A|D, B|D, C|D, at b the cell E with A|E, B|E, C|E. After: a triangle D|E with
+// corners p_AB, p_BC, p_CA, each a quadruple point (p_AB of A, B, D, E), its edges the triple
+// lines (D, E, B) from p_AB to p_BC and so on. In the film A|B the line's vertices become p_AB
+// (its triple lines A|B|D from a and A|B|E from b now meet there) and its facets along the
+// line go. The film A|D loses its corner a to two: the facets of its fan at a on the side of
+// its triple line A|B|D take p_AB, those on the side of A|C|D take p_CA, and one new facet
+// (p_AB, u, p_CA) fills the gap; its edge p_CA -> p_AB is the new triple line (D, E, A). So
+// each new corner has six films and four triple lines: a Plateau quadruple point.
+#include "mesh/transitions.h"
+
+#include "core/errors.h"
+#include "core/format.h"
+#include "mesh/transition_surgery.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace froth {
+namespace {
+
+std::string line_name(int l) { return "t1: triple line " + std::to_string(l + 1); }
+
+int index_of(const Tri& t, int v) {
+    return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+}
+
+/// The bodies on the two sides of each surface (-1: the outside or nothing).
+std::vector<std::array<int, 2>> surface_cells(const Cluster& c) {
+    std::vector<std::vector<int>> listed(c.n_surfaces());
+    for (int k = 0; k < c.n_bodies(); ++k)
+        for (const BodyFace& f : c.bodies()[k].faces) listed[f.surface].push_back(k);
+    std::vector<std::array<int, 2>> cells(c.n_surfaces(), {-1, -1});
+    for (int s = 0; s < c.n_surfaces(); ++s)
+        for (std::size_t i = 0; i < listed[s].size() && i < 2; ++i) cells[s][i] = listed[s][i];
+    return cells;
+}
+
+/// The surfaces with a facet at vertex v.
+std::set<int> surfaces_at(const Cluster& c, int v) {
+    std::set<int> at;
+    for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) at.insert(c.pair_surface(k));
+    return at;
+}
+
+/// What the surgery needs to know about one end (a or b) of the line.
+struct LineEnd {
+    int vertex = -1;
+    std::vector<int> films; ///< the three films of the fourth cell there
+    int cell = -1;          ///< the fourth cell (D at a, E at b)
+};
+
+class T1 {
+  public:
+    T1(const Cluster& c, int line, double min_side)
+        : c_(c), line_(line), min_side_(min_side), name_(line_name(line)) {}
+
+    Cluster run(TransitionRecord* record);
+
+  private:
+    void check_line();
+    LineEnd end_at(int v);
+    void unwrap_line();
+    void place_corners();
+    int corner_of(int film) const;
+    void collapse_line_films(ClusterSpec& spec) const;
+    Vec3 old_area(int surface, std::size_t facet) const;
+    void split_fans(ClusterSpec& spec, const LineEnd& end) const;
+    double mean_edge_at(int v) const;
+    void check_no_facet_turns(const ClusterSpec& spec, const std::vector<Vec3>& V) const;
+
+    /// A facet that took a new corner: where it is in the new spec and its old area vector.
+    struct Moved {
+        int surface, facet;
+        Vec3 area;
+    };
+    mutable std::vector<Moved> moved_;
+
+    const Cluster& c_;
+    const int line_;
+    const double min_side_;
+    const std::string name_;
+    std::vector<int> seg_;                 // the line's vertices, a first
+    std::map<int, Offset> d_;              // their lattice offsets along the line, from a
+    std::map<int, Vec3> u_;                // their unwrapped positions
+    std::array<int, 3> films_{};           // A|B, B|C, C|A: the line's films
+    std::set<int> line_cells_;
+    LineEnd a_, b_;
+    std::array<Vec3, 3> p_;                // the new corners, in a's frame
+    double length_ = 0;
+    int n_ = 0;                            // c's vertex count: the corners are n_, n_+1, n_+2
+};
+
+void T1::check_line() {
+    const TripleLine& tl = c_.triple_lines()[line_];
+    if (tl.closed)
+        throw TopologyError(name_ + " is a closed loop; only a line between two quadruple "
+                            "points can become a film");
+    seg_ = tl.vertices;
+    films_ = tl.surfaces;
+    const auto is_quadruple = [&](int v) { return c_.vertex_junction_edges(v).size() == 4; };
+    if (seg_.front() == seg_.back() || !is_quadruple(seg_.front()) || !is_quadruple(seg_.back()))
+        throw TopologyError(name_ + " does not join two distinct quadruple points");
+    for (int v : seg_)
+        if (c_.is_fixed(v) || c_.curve_point(v) || !c_.vertex_walls(v).empty())
+            throw TopologyError(name_ + " has a fixed vertex or one on a wall (" +
+                                std::to_string(v + 1) + "); it cannot change");
+    const auto cells = surface_cells(c_);
+    for (int s : films_) line_cells_.insert(cells[s].begin(), cells[s].end());
+}
+
+LineEnd T1::end_at(int v) {
+    LineEnd end;
+    end.vertex = v;
+    const auto cells = surface_cells(c_);
+    std::set<int> fourth;
+    for (int s : surfaces_at(c_, v)) {
+        if (std::find(films_.begin(), films_.end(), s) != films_.end()) continue;
+        end.films.push_back(s);
+        for (int k : cells[s])
+            if (!line_cells_.count(k)) fourth.insert(k);
+    }
+    if (end.films.size() != 3 || fourth.size() != 1)
+        throw TopologyError(name_ + ": its end at vertex " + std::to_string(v + 1) + " is not a "
+                            "quadruple point of four cells");
+    end.cell = *fourth.begin();
+    return end;
+}
+
+/// The line's positions as one connected polyline from a (through the edges' lattice shifts).
+void T1::unwrap_line() {
+    u_[seg_[0]] = c_.position(seg_[0]);
+    for (std::size_t i = 1; i < seg_.size(); ++i) {
+        const int v = seg_[i - 1], w = seg_[i];
+        u_[w] = u_[v] + (c_.position(w) - c_.position(v) + c_.edge_shift(v, w));
+        length_ += (u_[w] - u_[v]).norm();
+    }
+    for (int v : seg_) d_[v] = surgery::lattice_offset(c_, u_[v], c_.position(v));
+}
+
+/// The mean length of the edges at v in its surfaces' facets.
+double T1::mean_edge_at(int v) const {
+    double sum = 0;
+    int count = 0;
+    for (int si : surfaces_at(c_, v)) {
+        const Surface& s = c_.surface(si);
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const int k = index_of(s.triangles[f], v);
+            if (k == 3) continue;
+            const auto x = s.corners(c_.positions(), f);
+            sum += (x[(k + 1) % 3] - x[k]).norm() + (x[(k + 2) % 3] - x[k]).norm();
+            count += 2;
+        }
+    }
+    return count ? sum / count : 0;
+}
+
+/// The corners p_s: in the plane through the line's midpoint normal to it, each in the
+/// direction its film leaves the line (the film's conormal there).
+void T1::place_corners() {
+    const Vec3 ua = u_[seg_.front()], ub = u_[seg_.back()];
+    const Vec3 mid = 0.5 * (ua + ub);
+    Vec3 along = ub - ua;
+    if (along.norm() == 0) along = u_[seg_[1]] - ua;
+    along.normalize();
+    const double side = std::max({length_, min_side_,
+                                  0.25 * (mean_edge_at(seg_.front()) + mean_edge_at(seg_.back()))});
+    const std::set<int> on_line(seg_.begin(), seg_.end());
+    for (int i = 0; i < 3; ++i) {
+        const Surface& s = c_.surface(films_[i]);
+        Vec3 conormal = Vec3::Zero();
+        for (std::size_t f = 0; f < s.triangles.size() && conormal.norm() == 0; ++f) {
+            const Tri& t = s.triangles[f];
+            const auto x = s.corners(c_.positions(), f);
+            int ka = -1, kq = -1, on = 0;
+            for (int k = 0; k < 3; ++k) {
+                if (t[k] == seg_.front()) ka = k;
+                if (on_line.count(t[k])) ++on;
+                else kq = k;
+            }
+            if (ka < 0 || on != 2) continue;
+            const Vec3 w = x[kq] - x[ka];
+            conormal = w - w.dot(along) * along;
+        }
+        if (!(conormal.norm() > 0))
+            throw TopologyError(name_ + ": surface " + std::to_string(films_[i] + 1) +
+                                " has no facet along the line at its end");
+        p_[i] = mid + side / std::sqrt(3.0) * conormal.normalized();
+    }
+}
+
+Vec3 T1::old_area(int surface, std::size_t facet) const {
+    const auto x = c_.surface(surface).corners(c_.positions(), facet);
+    return (x[1] - x[0]).cross(x[2] - x[0]);
+}
+
+/// Moving a corner to a new point must not turn a facet over (a sliver next to the line
+/// would): the cell walk that orients the bodies would then go astray.
+void T1::check_no_facet_turns(const ClusterSpec& spec, const std::vector<Vec3>& V) const {
+    for (const Moved& m : moved_) {
+        const auto& s = spec.surfaces[m.surface];
+        std::array<Vec3, 3> x;
+        for (int k = 0; k < 3; ++k) {
+            x[k] = V[s.triangles[m.facet][k]];
+            if (!s.offsets.empty()) {
+                const Offset& o = s.offsets[m.facet][k];
+                x[k] += *spec.period * Vec3(o[0], o[1], o[2]);
+            }
+        }
+        if (!((x[1] - x[0]).cross(x[2] - x[0]).dot(m.area) > 0))
+            throw TopologyError(name_ + ": the T1 would turn a facet of surface " +
+                                std::to_string(m.surface + 1) + " over (a sliver next to the "
+                                "line); the mesh there is too fine across the line for it");
+    }
+}
+
+int T1::corner_of(int film) const {
+    for (int i = 0; i < 3; ++i)
+        if (films_[i] == film) return n_ + i;
+    return -1;
+}
+
+/// In the line's films the line's vertices become the film's corner; facets with two or more
+/// corners on the line go.
+void T1::collapse_line_films(ClusterSpec& spec) const {
+    const std::set<int> on_line(seg_.begin(), seg_.end());
+    for (int i = 0; i < 3; ++i) {
+        ClusterSpec::Surface& s = spec.surfaces[films_[i]];
+        ClusterSpec::Surface out;
+        out.sigma = s.sigma;
+        std::vector<std::pair<int, int>> link;
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            Tri t = s.triangles[f];
+            std::array<Offset, 3> k{};
+            if (!s.offsets.empty()) k = s.offsets[f];
+            int on = 0;
+            for (int j = 0; j < 3; ++j) {
+                if (!on_line.count(t[j])) continue;
+                ++on;
+                for (int x = 0; x < 3; ++x) k[j][x] -= d_.at(t[j])[x];
+                t[j] = n_ + i;
+            }
+            if (on > 1) continue;
+            for (int j = 0; j < 3; ++j)
+                if (t[j] == n_ + i) link.push_back({t[(j + 1) % 3], t[(j + 2) % 3]});
+            if (on == 1)
+                moved_.push_back({films_[i], static_cast<int>(out.triangles.size()),
+                                  old_area(films_[i], f)});
+            out.triangles.push_back(t);
+            if (spec.period) out.offsets.push_back(k);
+        }
+        surgery::check_one_fan(link, films_[i], name_);
+        s = std::move(out);
+    }
+}
+
+/// Each film of the fourth cell at this end: its fan at the end vertex u_0 ... u_n (facets
+/// (v, u_j, u_{j+1})) from the triple line towards film X (u_0) to the one towards film Y
+/// (u_n) takes X's corner for j < m and Y's for j >= m, and the facet (p_X, u_m, p_Y) fills
+/// the gap (m = ceil(n / 2), so the facets at both triple lines take their own corner).
+void T1::split_fans(ClusterSpec& spec, const LineEnd& end) const {
+    const int v = end.vertex;
+    const Offset dv = d_.at(v);
+    for (int si : end.films) {
+        ClusterSpec::Surface& s = spec.surfaces[si];
+        std::map<int, int> next, facet_from; // link u_j -> u_{j+1}, and its facet
+        std::set<int> targets;
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const Tri& t = s.triangles[f];
+            for (int j = 0; j < 3; ++j) {
+                if (t[j] != v) continue;
+                const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
+                if (!next.emplace(x, y).second || !targets.insert(y).second)
+                    throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " is "
+                                        "folded at vertex " + std::to_string(v + 1));
+                facet_from[x] = static_cast<int>(f);
+            }
+        }
+        int start = -1;
+        for (const auto& [x, y] : next)
+            if (!targets.count(x)) start = x;
+        if (start < 0)
+            throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " surrounds "
+                                "vertex " + std::to_string(v + 1) + "; it must end there");
+        std::vector<int> u{start};
+        while (next.count(u.back()) && u.size() <= next.size()) u.push_back(next[u.back()]);
+        if (u.size() != next.size() + 1)
+            throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " is pinched "
+                                "at vertex " + std::to_string(v + 1));
+        // the films of the line at the fan's two ends: on the junction edges (v, u_0), (v, u_n)
+        const auto film_towards = [&](int w) {
+            for (int e : c_.vertex_junction_edges(v)) {
+                const JunctionEdge& je = c_.junction_edges()[e];
+                if (je.a != w && je.b != w) continue;
+                for (int film : je.surfaces)
+                    if (corner_of(film) >= 0) return corner_of(film);
+            }
+            throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " does not end "
+                                "on the line's films at vertex " + std::to_string(v + 1));
+        };
+        const int pX = film_towards(u.front()), pY = film_towards(u.back());
+        const int n = static_cast<int>(u.size()) - 1, m = (n + 1) / 2;
+        for (int j = 0; j < n; ++j) {
+            const int f = facet_from[u[j]];
+            const int k = index_of(s.triangles[f], v);
+            moved_.push_back({si, f, old_area(si, f)});
+            s.triangles[f][k] = j < m ? pX : pY;
+            if (!s.offsets.empty())
+                for (int x = 0; x < 3; ++x) s.offsets[f][k][x] -= dv[x];
+        }
+        // the gap facet, in the frame of facet m - 1 (which holds p_X, u_{m-1}, u_m)
+        const int g = facet_from[u[m - 1]];
+        s.triangles.push_back({pX, u[m], pY});
+        if (!s.offsets.empty()) {
+            const Tri& t = s.triangles[g];
+            const Offset kp = s.offsets[g][index_of(t, pX)];
+            s.offsets.push_back({kp, s.offsets[g][index_of(t, u[m])], kp});
+        }
+    }
+}
+
+Cluster T1::run(TransitionRecord* record) {
+    check_line();
+    a_ = end_at(seg_.front());
+    b_ = end_at(seg_.back());
+    if (a_.cell == b_.cell)
+        throw TopologyError(name_ + ": the same cell (" +
+                            (a_.cell < 0 ? std::string("the outside")
+                                         : "body " + std::to_string(a_.cell + 1)) +
+                            ") meets both its ends; a film between it and itself cannot form");
+    unwrap_line();
+    place_corners();
+    n_ = c_.n_vertices();
+
+    ClusterSpec spec = cluster_spec(c_);
+    collapse_line_films(spec);
+    split_fans(spec, a_);
+    split_fans(spec, b_);
+    ClusterSpec::Surface film;
+    film.triangles.push_back({n_, n_ + 1, n_ + 2});
+    film.sigma = c_.surface(a_.films.front()).sigma;
+    if (spec.period) film.offsets.push_back({});
+    const int new_film = static_cast<int>(spec.surfaces.size());
+    spec.surfaces.push_back(std::move(film));
+    for (int cell : {a_.cell, b_.cell})
+        if (cell >= 0) spec.bodies[cell].push_back(new_film);
+
+    std::vector<Vec3> V = c_.positions();
+    V.insert(V.end(), p_.begin(), p_.end());
+    check_no_facet_turns(spec, V);
+    const std::vector<int> used = surgery::keep_used_vertices(spec, V);
+    surgery::copy_vertex_lists(c_, [&](int v) { return used[v]; }, spec);
+    Cluster r = surgery::rebuild(std::move(spec), name_, "the T1");
+    for (int i = 0; i < 3; ++i)
+        if (r.vertex_junction_edges(used[n_ + i]).size() != 4)
+            throw TopologyError(name_ + ": the new corner " + std::to_string(i + 1) + " is not "
+                                "a quadruple point; refine the mesh around the line first");
+    carry_over(c_, r);
+    r.set_anisotropy(new_film, c_.surface(a_.films.front()).gamma);
+    r.set_mobility(new_film, c_.surface(a_.films.front()).beta);
+
+    if (record) {
+        const auto cell_name = [](int k) {
+            return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
+        };
+        const Vec3 mid = 0.5 * (u_[seg_.front()] + u_[seg_.back()]);
+        record->kind = "T1";
+        record->line = line_;
+        record->cells = {a_.cell, b_.cell};
+        record->point = mid;
+        record->removed_vertices = static_cast<int>(seg_.size());
+        record->removed_facets = c_.n_facets() + 7 - r.n_facets(); // a gap facet per fan, the film
+        record->where = "triple line " + std::to_string(line_ + 1) + " (length " + fmt(length_) +
+                        ", vertices " + std::to_string(seg_.front() + 1) + " .. " +
+                        std::to_string(seg_.back() + 1) + ") became a film between " +
+                        cell_name(a_.cell) + " and " + cell_name(b_.cell) + " at " +
+                        point_text(mid);
+    }
+    return r;
+}
+
+} // namespace
+
+Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, double min_side) {
+    if (line < 0 || line >= static_cast<int>(c.triple_lines().size()))
+        throw InvalidInput("t1: triple line " + std::to_string(line + 1) + " does not exist (the "
+                           "cluster has " + std::to_string(c.triple_lines().size()) + ")");
+    return T1(c, line, min_side).run(record);
+}
+
+} // namespace froth
