@@ -476,6 +476,9 @@ int l_evolve(lua_State* L) {
         set_integer(L, "factorizations", r.factorizations);
         set_number(L, "max_energy_increase", r.max_energy_increase);
         set_integer(L, "rejected_steps", r.rejected_steps);
+        set_integer(L, "collapsed_edges", r.collapsed_edges);
+        set_integer(L, "split_edges", r.split_edges);
+        set_integer(L, "flipped_edges", r.flipped_edges);
         lua_pushstring(L, r.stop_reason.c_str());
         lua_setfield(L, -2, "stop_reason");
         if (r.event) {

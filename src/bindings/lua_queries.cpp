@@ -157,7 +157,8 @@ int l_edges(lua_State* L) {
         lua_createtable(L, 0, 6);
         set_integer(L, "id", ++id);
         set_integers(L, "vertices", std::vector<int>{edge.first, edge.second}, 1);
-        set_number(L, "length", (c.position(edge.first) - c.position(edge.second)).norm());
+        set_number(L, "length", (c.position(edge.second) - c.position(edge.first) +
+                                 c.edge_shift(edge.first, edge.second)).norm());
         set_integers(L, "surfaces", surfaces, 1);
         set_bool(L, "triple_line", surfaces.size() == 3);
         set_bool(L, "boundary", incidence.facets == 1); // a free boundary edge: a wall or a wire

@@ -192,6 +192,52 @@ int l_t1(lua_State* L) {
     });
 }
 
+/// The one length option of c:collapse_edges / c:split_edges, positive and finite.
+double edge_length_option(lua_State* L, const char* op, const char* key) {
+    Options o(L, 2, op);
+    const double length = o.number(key);
+    o.finish();
+    if (!(std::isfinite(length) && length > 0))
+        luaL_error(L, "%s: %s must be positive and finite, got %f", op, key, length);
+    return length;
+}
+
+/// c:collapse_edges{shorter_than} -> {collapsed, vertices}: Evolver's `t`.
+int l_collapse_edges(lua_State* L) {
+    ClusterHandle& h = self(L);
+    const double length = edge_length_option(L, "collapse_edges", "shorter_than");
+    ChangeGuard changing(L, h, "collapse_edges");
+    return guarded(L, [&] {
+        EdgeCollapseResult r = collapse_short_edges(h.cluster, length);
+        if (r.cluster) {
+            h.cluster = std::move(*r.cluster);
+            h.stepper.reset();
+        }
+        lua_createtable(L, 0, 2);
+        set_integer(L, "collapsed", r.collapsed);
+        set_integer(L, "vertices", h.cluster.n_vertices());
+        return 1;
+    });
+}
+
+/// c:split_edges{longer_than} -> {split, vertices}: Evolver's `l`.
+int l_split_edges(lua_State* L) {
+    ClusterHandle& h = self(L);
+    const double length = edge_length_option(L, "split_edges", "longer_than");
+    ChangeGuard changing(L, h, "split_edges");
+    return guarded(L, [&] {
+        EdgeSplitResult r = split_long_edges(h.cluster, length);
+        if (r.cluster) {
+            h.cluster = std::move(*r.cluster);
+            h.stepper.reset();
+        }
+        lua_createtable(L, 0, 2);
+        set_integer(L, "split", r.split);
+        set_integer(L, "vertices", h.cluster.n_vertices());
+        return 1;
+    });
+}
+
 /// c:equiangulate{max_sweeps} -> {flips, sweeps, volume_change}
 int l_equiangulate(lua_State* L) {
     ClusterHandle& h = self(L);
@@ -223,6 +269,8 @@ const luaL_Reg methods[] = {
     {"equiangulate", l_equiangulate},
     {"pop_body", l_pop_body},
     {"t1", l_t1},
+    {"collapse_edges", l_collapse_edges},
+    {"split_edges", l_split_edges},
     {"minimize", l_minimize},
     {"pressures", l_pressures},
     {"body_report", l_body_report},

@@ -212,7 +212,7 @@ void T1::check_no_facet_turns(const ClusterSpec& spec, const std::vector<Vec3>& 
                 x[k] += *spec.period * Vec3(o[0], o[1], o[2]);
             }
         }
-        if (!((x[1] - x[0]).cross(x[2] - x[0]).dot(m.area) > 0))
+        if (!surgery::keeps_its_side(m.area, x))
             throw TopologyError(name_ + ": the T1 would turn a facet of surface " +
                                 std::to_string(m.surface + 1) + " over (a sliver next to the "
                                 "line); the mesh there is too fine across the line for it");

@@ -5,6 +5,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -73,6 +74,13 @@ void check_one_fan(const std::vector<std::pair<int, int>>& link, int surface,
         throw TopologyError(what + ": it would pinch " + name + " at the point (its facets "
                             "there would form more than one fan); refine the mesh around it "
                             "first");
+}
+
+bool keeps_its_side(const Vec3& old_area, const std::array<Vec3, 3>& y) {
+    const Vec3 area = (y[1] - y[0]).cross(y[2] - y[0]);
+    const double scale = std::max({(y[1] - y[0]).squaredNorm(), (y[2] - y[0]).squaredNorm(),
+                                   (y[2] - y[1]).squaredNorm()});
+    return area.dot(old_area) > 0 && area.norm() > 1e-8 * scale;
 }
 
 Offset lattice_offset(const Cluster& c, const Vec3& unwrapped, const Vec3& stored) {

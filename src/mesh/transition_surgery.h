@@ -4,6 +4,7 @@
 
 #include "mesh/cluster.h"
 
+#include <array>
 #include <functional>
 #include <string>
 #include <utility>
@@ -30,6 +31,10 @@ Cluster rebuild(ClusterSpec spec, const std::string& what, const std::string& su
 /// at P. \throw TopologyError "<what>: ... surface N ..."
 void check_one_fan(const std::vector<std::pair<int, int>>& link, int surface,
                    const std::string& what);
+
+/// True if the facet with corners y still faces the way of its old area vector and has not
+/// (nearly) lost its area: surgery that moves corners must not turn or flatten a facet.
+bool keeps_its_side(const Vec3& old_area, const std::array<Vec3, 3>& y);
 
 /// Integer lattice offsets d with u = X + L d (all zero without a period).
 Offset lattice_offset(const Cluster& c, const Vec3& unwrapped, const Vec3& stored);

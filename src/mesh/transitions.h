@@ -6,6 +6,7 @@
 
 #include "mesh/cluster.h"
 
+#include <optional>
 #include <string>
 
 namespace froth {
@@ -57,5 +58,31 @@ Cluster pop_body(const Cluster& c, int body, TransitionRecord* record = nullptr)
 /// or whose films would be pinched or folded by the surgery (a mesh too coarse there).
 Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = nullptr,
                         double min_side = 0);
+
+/// Mesh upkeep: what collapse_short_edges made.
+struct EdgeCollapseResult {
+    std::optional<Cluster> cluster; ///< none when nothing collapsed
+    int collapsed = 0;
+};
+
+/// Evolver's `t`: collapses edges shorter than min_length, in one pass of collapses with
+/// disjoint neighbourhoods (shortest first), without changing the topology: an edge inside a
+/// film whose ends both lie on junctions, one between two quadruple points, one of a closed
+/// triple line of three edges, edges at walls, wires, fixed or curve vertices, and collapses
+/// that break the link condition or would turn a facet over are left. The end of higher rank
+/// (film < triple line < quadruple point) keeps its place, equal ranks meet halfway.
+/// Materials, time and the bodies' reference and target volumes are kept.
+EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length);
+
+struct EdgeSplitResult {
+    std::optional<Cluster> cluster; ///< none when nothing was split
+    int split = 0;
+};
+
+/// Evolver's `l`: splits edges longer than max_length at their midpoints (each facet at such an
+/// edge into two), in one pass of splits with disjoint facets, longest first; edges on walls
+/// and wires are left. Topology, volumes (the midpoints lie on the straight edges), materials,
+/// time and the reference and target volumes are kept.
+EdgeSplitResult split_long_edges(const Cluster& c, double max_length);
 
 } // namespace froth

@@ -232,11 +232,14 @@ class Run {
         refused_.clear();
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
-            if (o_.transitions && made < kMaxTransitionsPerStep && t1_shrinking_line()) continue;
-            e = watch_.check(c_, r_.steps);
-            if (e && e->kind == "vanishing body" && o_.transitions &&
-                made < kMaxTransitionsPerStep && pop(*e))
+            if (o_.transitions && made < kMaxTransitionsPerStep &&
+                (split_edges() || t1_shrinking_line()))
                 continue;
+            e = watch_.check(c_, r_.steps);
+            if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
+            if (e->kind == "vanishing body" && pop(*e)) continue;
+            if (e->kind == "collapsing edge" && collapse_edges()) continue;
+            if (e->kind == "collapsing facet" && flip_edges()) continue;
             break;
         }
         if (e && !refused_.empty()) e->message += "; " + refused_;
@@ -288,13 +291,52 @@ class Run {
         }
     }
 
+    /// Mesh upkeep for a collapsing edge: the edges shorter than 2.5 min_edge_fraction of
+    /// the mean edge collapse (mesh/transitions.h); false if none could.
+    bool collapse_edges() {
+        const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
+        EdgeCollapseResult collapsed = collapse_short_edges(c_, limit);
+        if (!collapsed.cluster) return false;
+        r_.collapsed_edges += collapsed.collapsed;
+        replace_cluster(std::move(*collapsed.cluster), false);
+        return true;
+    }
+
+    /// Mesh upkeep for the films a transition makes grow: once the run has made one, edges
+    /// longer than twice the mean edge at the start of the run are split, and the films then
+    /// flipped to Delaunay (the splits of a stretched facet leave fans of slivers). A run
+    /// without transitions keeps its mesh as it is.
+    bool split_edges() {
+        if (r_.events.empty()) return false;
+        EdgeSplitResult split = split_long_edges(c_, 2 * h_start_);
+        if (!split.cluster) return false;
+        r_.split_edges += split.split;
+        replace_cluster(std::move(*split.cluster), false);
+        flip_edges();
+        return true;
+    }
+
+    /// Mesh upkeep for a collapsing facet after a transition: Delaunay flips (Evolver's `u`)
+    /// inside the films, which turn a flat sliver into two good facets; not in a periodic
+    /// cluster.
+    bool flip_edges() {
+        if (c_.periodic() || r_.events.empty()) return false;
+        EquiangulateResult flipped = equiangulate(c_);
+        if (!flipped.cluster) return false;
+        r_.flipped_edges += flipped.flips;
+        replace_cluster(std::move(*flipped.cluster), false);
+        return true;
+    }
+
     /// The cluster after a transition: the stepper starts afresh, the state is the last one
-    /// without crossings, and the history gets a row for it (tau = 0).
-    void replace_cluster(Cluster changed) {
+    /// without crossings, and the history gets a row for it (tau = 0) if it changed the
+    /// energy by more than round-off.
+    void replace_cluster(Cluster changed, bool history_row_after = true) {
         c_ = std::move(changed);
         stepper_.reset();
         uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
-        if (!o_.history.empty()) history_.push_back(history_row(make_report(c_), 0));
+        if (!o_.history.empty() && history_row_after)
+            history_.push_back(history_row(make_report(c_), 0));
     }
 
     /// Pops the vanishing body of event e; false (and the reason added to e's message) if it
@@ -364,6 +406,7 @@ class Run {
     const int n_start_bodies_ = c_.n_bodies();
     std::vector<int> original_body_; // the bodies' ids at the start of the run
     std::string refused_;            // why a due T1 could not be made in this step
+    const double h_start_ = mean_edge_length(c_); // the mesh size the upkeep keeps
     static constexpr int kMaxTransitionsPerStep = 64;
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;

@@ -54,10 +54,14 @@ struct EvolveOptions {
     /// What counts as the approach of a topology change (run/topology_watch.h).
     WatchOptions watch;
     /// Topological transitions (mesh/transitions.h): a body the watch sees vanishing pops
-    /// (Evolver's `pop`) and the run goes on; false stops the run there instead. A pop that
+    /// (Evolver's `pop`), a triple line between two quadruple points shorter than
+    /// watch.min_line_fraction of the mean edge becomes a film (T1), and the run goes on; false
+    /// stops the run there instead. A T1 that cannot be made is noted in the message of the
+    /// event that follows. A pop that
     /// cannot be made (the body has more than four neighbouring cells, is all the cluster
     /// has, meets a wall; or the pop would raise the energy) ends the run as without it, the
-    /// reason added to the message.
+    /// reason added to the message. With it evolve also keeps the mesh up (collapses, splits,
+    /// flips: EvolveResult::collapsed_edges).
     bool transitions = true;
     /// The r > 1 iteration of every step (flows/stepper.h).
     FixedPointOptions fixed_point;
@@ -99,6 +103,10 @@ struct EvolveResult {
     std::string stop_reason;
     std::optional<TopologyEvent> event; ///< set when the watch or a failing step stopped the run
     std::vector<TransitionEvent> events; ///< the transitions made, in order
+    /// Mesh upkeep with transitions: short edges collapsed (at a "collapsing edge"); after a
+    /// transition long ones split (longer than twice the mean edge at the start) and edges
+    /// flipped (after the splits and at a "collapsing facet")
+    int collapsed_edges = 0, split_edges = 0, flipped_edges = 0;
 };
 
 /// A step that fails geometrically (GeometryError, SolverError: a collapsing facet, a singular

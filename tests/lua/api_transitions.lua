@@ -173,6 +173,64 @@ for b = 1, 5 do
   T.assert_near(flow:volumes()[b], V0[b], 1e-9 * V0[b], "SD holds body " .. b .. " through it")
 end
 
+T.assert_true(rf.split_edges > 0, "the growing film's edges were split", tostring(rf.split_edges))
+
+-- 5. Mesh upkeep by hand: c:split_edges (Evolver's l) and c:collapse_edges (Evolver's t).
+local function edge_lengths(c)
+  local lo, hi = math.huge, 0
+  for _, e in ipairs(c:edges()) do lo, hi = math.min(lo, e.length), math.max(hi, e.length) end
+  return lo, hi
+end
+local u = froth.double_bubble{h = 0.2}
+local A0, W0, n1 = u:area(), u:volumes(), u:info().vertices
+local lo, hi = edge_lengths(u)
+local sp = u:split_edges{longer_than = 0.8 * hi}
+T.assert_true(sp.split > 0, "split_edges splits the longest edges", tostring(sp.split))
+T.assert_equal(u:info().vertices, n1 + sp.split, "one new vertex per split")
+T.assert_equal(sp.vertices, u:info().vertices, "vertices")
+T.assert_near(u:area(), A0, 1e-12 * A0, "splits keep the area (the midpoints are on the edges)")
+T.assert_near(u:volumes()[1], W0[1], 1e-12 * W0[1], "and the volumes")
+T.assert_equal(#u:triple_lines(), 1, "and the topology")
+local _, hi2 = edge_lengths(u)
+T.assert_true(hi2 < hi, "the longest edge is shorter", hi2 .. " < " .. hi)
+T.assert_equal(u:split_edges{longer_than = 10}.split, 0, "nothing longer than 10")
+
+local n2 = u:info().vertices
+lo = edge_lengths(u)
+local W1 = u:volumes()
+local cl = u:collapse_edges{shorter_than = 1.2 * lo}
+T.assert_true(cl.collapsed > 0, "collapse_edges collapses the shortest", tostring(cl.collapsed))
+T.assert_equal(u:info().vertices, n2 - cl.collapsed, "one vertex fewer per collapse")
+local lo2 = edge_lengths(u)
+T.assert_true(lo2 > lo, "the shortest edge is longer", lo2 .. " > " .. lo)
+T.assert_equal(#u:triple_lines(), 1, "collapses keep the triple line")
+T.assert_equal(#u:triple_lines()[1].vertices > 3, true, "and it keeps more than three vertices")
+T.assert_true(math.abs(u:volumes()[1] - W1[1]) < 1e-3 * W1[1], "volumes change little",
+              tostring(u:volumes()[1] - W1[1]))
+local sd = u:evolve{flow = "sd", tau = 1e-3, steps = 2, progress = false}
+T.assert_near(u:volumes()[2], u:target_volumes()[2], 1e-9 * W0[2], "and SD goes on after them")
+-- a periodic foam: splits keep the filled box exactly
+local kf = froth.kelvin_foam{h = 0.3}
+local _, khi = edge_lengths(kf)
+local ks = kf:split_edges{longer_than = 0.7 * khi}
+local sum = 0
+for _, v in ipairs(kf:volumes()) do sum = sum + v end
+T.assert_true(ks.split > 0, "Kelvin: edges split across the box too")
+T.assert_near(sum, 2, 1e-12, "Kelvin: the two cells still fill the box")
+T.assert_near(kf:volumes()[1], 1, 1e-9, "and keep their volumes")
+local klo = edge_lengths(kf)
+local lines_k, quads_k = #kf:triple_lines(), #kf:quadruple_points()
+local kc = kf:collapse_edges{shorter_than = 1.3 * klo}
+sum = 0
+for _, v in ipairs(kf:volumes()) do sum = sum + v end
+T.assert_true(kc.collapsed > 0, "Kelvin: edges collapse across the box too")
+T.assert_near(sum, 2, 1e-12, "Kelvin: the cells fill the box after the collapses")
+T.assert_equal(#kf:triple_lines() * 100 + #kf:quadruple_points(), lines_k * 100 + quads_k,
+               "Kelvin: collapses keep the lines and quadruple points")
+T.check_error("split_edges: longer_than must be positive and finite", u.split_edges, u, {longer_than = 0})
+T.check_error("collapse_edges: option 'shorter_than' is required", u.collapse_edges, u, {})
+T.check_error("collapse_edges: unknown option 'x'", u.collapse_edges, u, {shorter_than = 1, x = 1})
+
 -- errors
 local db = froth.double_bubble{h = 0.3}
 T.check_error("t1: triple line 1 is a closed loop", db.t1, db, 1)

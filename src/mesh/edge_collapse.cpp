@@ -1,0 +1,207 @@
+// Mesh upkeep (transitions.h, collapse_short_edges): Evolver's `t`, the collapse of edges
+// too short for the flow to go on, without changing the cluster's topology.
+//
+// An edge (a, b) collapses onto one vertex: the one of higher rank (a film's interior < a
+// triple line < a quadruple point) keeps its place, two of equal rank meet at the midpoint.
+// Only collapses that keep every junction are made: an edge inside a film whose ends are
+// both on junctions would join two lines, and an edge between two quadruple points is a T1's
+// business. The two (or three, along a triple line) facets at the edge go; the others at the
+// removed vertex take the kept one. The link condition (the ends' common neighbours are
+// exactly the corners opposite the edge) keeps every film a manifold, and a collapse that
+// would turn a facet over is not made. Collapses of one pass touch disjoint neighbourhoods,
+// so each is checked against the geometry before the pass.
+#include "mesh/transitions.h"
+
+#include "core/errors.h"
+#include "mesh/transition_surgery.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace froth {
+namespace {
+
+/// 0: inside one film, 1: on a triple line, 2: a quadruple point, -1: held (a wall, a wire,
+/// a fixed or curve vertex, or another junction).
+std::vector<int> vertex_ranks(const Cluster& c) {
+    std::vector<int> rank(c.n_vertices(), -1);
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        if (c.is_fixed(v) || c.curve_point(v) || !c.vertex_walls(v).empty()) continue;
+        const std::size_t surfaces = c.pair_begin(v + 1) - c.pair_begin(v);
+        const std::size_t lines = c.vertex_junction_edges(v).size();
+        if (surfaces == 1 && lines == 0) rank[v] = 0;
+        else if (surfaces == 3 && lines == 2) rank[v] = 1;
+        else if (surfaces == 6 && lines == 4) rank[v] = 2;
+    }
+    for (const BoundaryEdge& e : c.boundary_edges()) rank[e.a] = rank[e.b] = -1;
+    for (const BoundaryEdge& e : c.wire_edges()) rank[e.a] = rank[e.b] = -1;
+    return rank;
+}
+
+struct Candidate {
+    double length;
+    int a, b; // a < b
+};
+
+class Collapser {
+  public:
+    Collapser(const Cluster& c, double min_length) : c_(c), min_length_(min_length) {}
+    /// One pass; the number of edges collapsed (0: the spec is not needed).
+    int pass();
+    ClusterSpec& spec() { return spec_; }
+    const std::vector<Vec3>& positions() const { return X_; }
+
+  private:
+    std::vector<Candidate> short_edges() const;
+    bool collapse(const Candidate& e);
+    bool link_condition(int a, int b) const;
+
+    const Cluster& c_;
+    const double min_length_;
+    ClusterSpec spec_;
+    std::vector<Vec3> X_;
+    std::vector<int> rank_;
+    std::vector<std::set<int>> neighbours_;
+    std::vector<std::vector<std::pair<int, int>>> facets_at_; // (surface, facet) per vertex
+    std::set<std::pair<int, int>> junction_;                  // junction edges (a < b)
+    std::vector<char> touched_;
+    std::vector<std::array<int, 2>> removed_facets_;          // (surface, facet) to drop
+};
+
+std::vector<Candidate> Collapser::short_edges() const {
+    std::map<std::pair<int, int>, double> length;
+    for (int si = 0; si < c_.n_surfaces(); ++si) {
+        const Surface& s = c_.surface(si);
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const auto x = s.corners(c_.positions(), f);
+            for (int k = 0; k < 3; ++k) {
+                const double l = (x[(k + 1) % 3] - x[k]).norm();
+                if (l < min_length_)
+                    length[std::minmax(s.triangles[f][k], s.triangles[f][(k + 1) % 3])] = l;
+            }
+        }
+    }
+    std::vector<Candidate> out;
+    for (const auto& [e, l] : length) out.push_back({l, e.first, e.second});
+    std::sort(out.begin(), out.end(), [](const Candidate& x, const Candidate& y) {
+        return x.length < y.length;
+    });
+    return out;
+}
+
+/// The common neighbours of a and b are exactly the corners opposite the edge.
+bool Collapser::link_condition(int a, int b) const {
+    std::set<int> opposite;
+    for (const auto& [si, f] : facets_at_[a]) {
+        const Tri& t = spec_.surfaces[si].triangles[f];
+        if (std::find(t.begin(), t.end(), b) == t.end()) continue;
+        for (int v : t)
+            if (v != a && v != b) opposite.insert(v);
+    }
+    std::set<int> common;
+    std::set_intersection(neighbours_[a].begin(), neighbours_[a].end(), neighbours_[b].begin(),
+                          neighbours_[b].end(), std::inserter(common, common.begin()));
+    return common == opposite;
+}
+
+bool Collapser::collapse(const Candidate& e) {
+    const int ra = rank_[e.a], rb = rank_[e.b];
+    if (ra < 0 || rb < 0 || touched_[e.a] || touched_[e.b]) return false;
+    const bool along_line = junction_.count({e.a, e.b}) > 0;
+    if (along_line ? (ra == 2 && rb == 2) : (ra > 0 && rb > 0)) return false;
+    if (!link_condition(e.a, e.b)) return false;
+    // keep the vertex of higher rank; equal ranks meet halfway
+    const int keep = ra >= rb ? e.a : e.b, gone = keep == e.a ? e.b : e.a;
+    const Vec3 shift = c_.edge_shift(keep, gone); // gone's image next to keep
+    const Offset d = surgery::lattice_offset(c_, X_[gone] + shift, X_[gone]);
+    const Vec3 target = ra == rb ? 0.5 * (X_[keep] + X_[gone] + shift) : X_[keep];
+
+    // the facets at either end after the collapse: none may turn over
+    struct Change {
+        int surface, facet, corner;
+    };
+    std::vector<Change> changes;
+    std::vector<std::array<int, 2>> dropped;
+    for (int v : {keep, gone})
+        for (const auto& [si, f] : facets_at_[v]) {
+            const Tri& t = spec_.surfaces[si].triangles[f];
+            const bool both = std::find(t.begin(), t.end(), keep) != t.end() &&
+                              std::find(t.begin(), t.end(), gone) != t.end();
+            if (both) {
+                if (v == keep) dropped.push_back({si, f});
+                continue;
+            }
+            const auto x = c_.surface(si).corners(X_, f);
+            const Vec3 before = (x[1] - x[0]).cross(x[2] - x[0]);
+            const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+            std::array<Vec3, 3> y = x;
+            y[k] = target + (x[k] - X_[v]) - (v == gone ? shift : Vec3::Zero());
+            if (!surgery::keeps_its_side(before, y)) return false;
+            if (v == gone) changes.push_back({si, f, k});
+        }
+    for (const Change& ch : changes) {
+        spec_.surfaces[ch.surface].triangles[ch.facet][ch.corner] = keep;
+        if (!spec_.surfaces[ch.surface].offsets.empty())
+            for (int x = 0; x < 3; ++x)
+                spec_.surfaces[ch.surface].offsets[ch.facet][ch.corner][x] -= d[x];
+    }
+    removed_facets_.insert(removed_facets_.end(), dropped.begin(), dropped.end());
+    X_[keep] = target;
+    for (int v : {keep, gone}) {
+        touched_[v] = 1;
+        for (int w : neighbours_[v]) touched_[w] = 1;
+    }
+    return true;
+}
+
+int Collapser::pass() {
+    spec_ = cluster_spec(c_);
+    X_ = c_.positions();
+    rank_ = vertex_ranks(c_);
+    neighbours_.assign(c_.n_vertices(), {});
+    facets_at_.assign(c_.n_vertices(), {});
+    touched_.assign(c_.n_vertices(), 0);
+    for (int si = 0; si < c_.n_surfaces(); ++si) {
+        const auto& tris = c_.surface(si).triangles;
+        for (int f = 0; f < static_cast<int>(tris.size()); ++f)
+            for (int k = 0; k < 3; ++k) {
+                facets_at_[tris[f][k]].push_back({si, f});
+                neighbours_[tris[f][k]].insert(tris[f][(k + 1) % 3]);
+                neighbours_[tris[f][k]].insert(tris[f][(k + 2) % 3]);
+            }
+    }
+    for (const JunctionEdge& e : c_.junction_edges()) junction_.insert(std::minmax(e.a, e.b));
+    // lines of three edges (closed) cannot lose one
+    for (const TripleLine& line : c_.triple_lines())
+        if (line.closed && line.vertices.size() <= 3)
+            for (int v : line.vertices) rank_[v] = -1;
+    int made = 0;
+    for (const Candidate& e : short_edges()) made += collapse(e);
+    if (!made) return 0;
+    std::sort(removed_facets_.begin(), removed_facets_.end());
+    for (auto it = removed_facets_.rbegin(); it != removed_facets_.rend(); ++it) {
+        auto& s = spec_.surfaces[(*it)[0]];
+        s.triangles.erase(s.triangles.begin() + (*it)[1]);
+        if (!s.offsets.empty()) s.offsets.erase(s.offsets.begin() + (*it)[1]);
+    }
+    return made;
+}
+
+} // namespace
+
+EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length) {
+    EdgeCollapseResult r;
+    Collapser collapser(c, min_length);
+    r.collapsed = collapser.pass();
+    if (r.collapsed == 0) return r;
+    ClusterSpec& spec = collapser.spec();
+    const std::vector<int> used = surgery::keep_used_vertices(spec, collapser.positions());
+    surgery::copy_vertex_lists(c, [&](int v) { return used[v]; }, spec);
+    r.cluster.emplace(surgery::rebuild(std::move(spec), "collapse_short_edges",
+                                       "the collapses"));
+    carry_over(c, *r.cluster);
+    return r;
+}
+
+} // namespace froth

@@ -1,0 +1,93 @@
+// Mesh upkeep (transitions.h, split_long_edges): Evolver's `l`, the split of edges that a
+// growing film has stretched, without changing the cluster's topology.
+//
+// An edge (a, b) gets its midpoint m; each facet (a, b, q) at it (two inside a film, three
+// along a triple line) becomes (a, m, q) and (m, b, q) in the same orientation, so the
+// films, their junctions and the bodies' volumes are kept (m lies on the straight edge). The
+// splits of one pass touch disjoint facets. Edges on walls and wires are left (their
+// midpoints would have to be projected, as refine does).
+#include "mesh/transitions.h"
+
+#include "mesh/transition_surgery.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace froth {
+
+EdgeSplitResult split_long_edges(const Cluster& c, double max_length) {
+    EdgeSplitResult r;
+    // the edges longer than max_length, longest first, with the facets at each
+    std::map<std::pair<int, int>, std::pair<double, std::vector<std::array<int, 2>>>> edges;
+    for (int si = 0; si < c.n_surfaces(); ++si) {
+        const Surface& s = c.surface(si);
+        for (int f = 0; f < static_cast<int>(s.triangles.size()); ++f) {
+            const auto x = s.corners(c.positions(), f);
+            for (int k = 0; k < 3; ++k) {
+                const double l = (x[(k + 1) % 3] - x[k]).norm();
+                const auto key = std::minmax(s.triangles[f][k], s.triangles[f][(k + 1) % 3]);
+                if (l > max_length) edges[key].first = l, edges[key].second.push_back({si, f});
+            }
+        }
+    }
+    if (edges.empty()) return r;
+    std::set<std::pair<int, int>> held;
+    for (const BoundaryEdge& e : c.boundary_edges()) held.insert(std::minmax(e.a, e.b));
+    for (const BoundaryEdge& e : c.wire_edges()) held.insert(std::minmax(e.a, e.b));
+    std::vector<std::pair<double, std::pair<int, int>>> order;
+    for (const auto& [e, lf] : edges)
+        if (!held.count(e)) order.push_back({-lf.first, e});
+    std::sort(order.begin(), order.end());
+
+    ClusterSpec spec = cluster_spec(c);
+    std::vector<Vec3> V = c.positions();
+    std::set<std::array<int, 2>> touched;
+    std::vector<std::vector<char>> split(c.n_surfaces()); // facets replaced by two new ones
+    for (int si = 0; si < c.n_surfaces(); ++si) split[si].assign(c.surface(si).triangles.size(), 0);
+    for (const auto& [negative_length, e] : order) {
+        const auto& facets = edges[e].second;
+        if (std::any_of(facets.begin(), facets.end(), [&](const auto& f) { return touched.count(f); }))
+            continue;
+        const auto [a, b] = e;
+        const int m = static_cast<int>(V.size());
+        V.push_back(c.position(a) + 0.5 * (c.position(b) - c.position(a) + c.edge_shift(a, b)));
+        for (const auto& [si, f] : facets) {
+            touched.insert({si, f});
+            auto& s = spec.surfaces[si];
+            const Tri t = s.triangles[f];
+            int i = 0; // the edge is t[i] -> t[i + 1]
+            while (!((t[i] == a && t[(i + 1) % 3] == b) || (t[i] == b && t[(i + 1) % 3] == a))) ++i;
+            const int x0 = t[i], x1 = t[(i + 1) % 3], x2 = t[(i + 2) % 3];
+            s.triangles.push_back({x0, m, x2});
+            s.triangles.push_back({m, x1, x2});
+            if (!s.offsets.empty()) {
+                const auto k = s.offsets[f];
+                const Offset km = x0 == a ? k[i] : k[(i + 1) % 3]; // m is in a's frame
+                s.offsets.push_back({k[i], km, k[(i + 2) % 3]});
+                s.offsets.push_back({km, k[(i + 1) % 3], k[(i + 2) % 3]});
+            }
+            split[si][f] = 1;
+        }
+        ++r.split;
+    }
+    for (int si = 0; si < c.n_surfaces(); ++si) {
+        auto& s = spec.surfaces[si];
+        std::size_t kept = 0;
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            if (f < split[si].size() && split[si][f]) continue;
+            s.triangles[kept] = s.triangles[f];
+            if (!s.offsets.empty()) s.offsets[kept] = s.offsets[f];
+            ++kept;
+        }
+        s.triangles.resize(kept);
+        if (!s.offsets.empty()) s.offsets.resize(kept);
+    }
+    const std::vector<int> used = surgery::keep_used_vertices(spec, V);
+    surgery::copy_vertex_lists(c, [&](int v) { return used[v]; }, spec);
+    r.cluster.emplace(surgery::rebuild(std::move(spec), "split_long_edges", "the splits"));
+    carry_over(c, *r.cluster);
+    return r;
+}
+
+} // namespace froth
