@@ -2,7 +2,9 @@
 // cluster.h). An interior edge ab of one surface, between the triangles (a, b, p) and (b, a, q),
 // is flipped to pq when the angles at p and q opposite it add up to more than pi (the local
 // Delaunay test of the two triangles); the two new triangles (a, q, p) and (b, p, q) keep the
-// surface's orientation.
+// surface's orientation. In a periodic cluster the test and the new facets use the first
+// triangle's frame: q's corner offset there is its offset in the second triangle moved by
+// the difference of a's offsets in the two.
 #include "core/errors.h"
 #include "mesh/cluster.h"
 
@@ -35,7 +37,15 @@ struct Side {
 struct Flipper {
     const Cluster& c;
     std::vector<std::vector<Tri>> tris; // per surface
+    std::vector<std::vector<std::array<Offset, 3>>> offsets; // per surface (periodic only)
     std::set<EdgeKey> edges;            // every edge of every surface
+
+    /// The corner of vertex v at lattice offset k.
+    Vec3 corner(int v, const Offset& k) const {
+        Vec3 x = c.position(v);
+        if (c.periodic()) x += c.period() * Vec3(k[0], k[1], k[2]);
+        return x;
+    }
 
     /// Flips the edge of sides s1 and s2 if the Delaunay test asks for it and the result is a
     /// valid film: the new edge is new, the two new facets are not degenerate and face the
@@ -48,19 +58,33 @@ struct Flipper {
         const int q = t2[(s2.corner + 2) % 3];
         if (p == q || edges.count(key(p, q))) return false;
         if (c.is_fixed(a) && c.is_fixed(b) && c.is_fixed(p) && c.is_fixed(q)) return false;
-        const auto& X = c.positions();
-        if (angle_at(X[p], X[a], X[b]) + angle_at(X[q], X[b], X[a]) <= std::numbers::pi + 1e-12)
+        // the four corners in t1's frame
+        Offset ka{}, kb{}, kp{}, kq{};
+        if (c.periodic()) {
+            const auto& o1 = offsets[s1.surface][s1.triangle];
+            const auto& o2 = offsets[s2.surface][s2.triangle];
+            ka = o1[s1.corner], kb = o1[(s1.corner + 1) % 3], kp = o1[(s1.corner + 2) % 3];
+            const Offset& a2 = o2[(s2.corner + 1) % 3]; // t2 runs b -> a
+            kq = o2[(s2.corner + 2) % 3];
+            for (int x = 0; x < 3; ++x) kq[x] += ka[x] - a2[x];
+        }
+        const Vec3 xa = corner(a, ka), xb = corner(b, kb), xp = corner(p, kp), xq = corner(q, kq);
+        if (angle_at(xp, xa, xb) + angle_at(xq, xb, xa) <= std::numbers::pi + 1e-12)
             return false;
-        const auto normal = [&](int i, int j, int k) {
-            return Vec3((X[j] - X[i]).cross(X[k] - X[i]));
+        const auto normal = [](const Vec3& i, const Vec3& j, const Vec3& k) {
+            return Vec3((j - i).cross(k - i));
         };
-        const Vec3 before = normal(a, b, p) + normal(b, a, q);
-        const Vec3 n1 = normal(a, q, p), n2 = normal(b, p, q);
+        const Vec3 before = normal(xa, xb, xp) + normal(xb, xa, xq);
+        const Vec3 n1 = normal(xa, xq, xp), n2 = normal(xb, xp, xq);
         const double scale = before.norm();
         if (n1.dot(before) <= 1e-12 * scale * scale || n2.dot(before) <= 1e-12 * scale * scale)
             return false;
         t1 = {a, q, p};
         t2 = {b, p, q};
+        if (c.periodic()) {
+            offsets[s1.surface][s1.triangle] = {ka, kq, kp};
+            offsets[s2.surface][s2.triangle] = {kb, kp, kq};
+        }
         edges.erase(key(a, b));
         edges.insert(key(p, q));
         touched[s1.triangle] = touched[s2.triangle] = 1;
@@ -97,11 +121,10 @@ EquiangulateResult equiangulate(const Cluster& c, int max_sweeps) {
     if (max_sweeps < 1)
         throw InvalidInput("equiangulate: max_sweeps must be at least 1, got " +
                            std::to_string(max_sweeps));
-    if (c.periodic())
-        throw InvalidInput("equiangulate: periodic clusters are not supported yet (refine is)");
-    Flipper f{c, {}, {}};
+    Flipper f{c, {}, {}, {}};
     for (const Surface& s : c.surfaces()) {
         f.tris.push_back(s.triangles);
+        f.offsets.push_back(s.offsets);
         for (const Tri& t : s.triangles)
             for (int k = 0; k < 3; ++k)
                 f.edges.insert(key(t[k], t[(k + 1) % 3]));
@@ -114,8 +137,10 @@ EquiangulateResult equiangulate(const Cluster& c, int max_sweeps) {
     }
     if (r.flips == 0) return r;
     ClusterSpec spec = cluster_spec(c);
-    for (std::size_t s = 0; s < spec.surfaces.size(); ++s)
+    for (std::size_t s = 0; s < spec.surfaces.size(); ++s) {
         spec.surfaces[s].triangles = std::move(f.tris[s]);
+        spec.surfaces[s].offsets = std::move(f.offsets[s]);
+    }
     Cluster flipped(std::move(spec));
     if (flipped.n_bodies() != c.n_bodies())
         throw TopologyError("equiangulate: the flipped cluster has " +

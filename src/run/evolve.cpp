@@ -317,10 +317,9 @@ class Run {
     }
 
     /// Mesh upkeep for a collapsing facet after a transition: Delaunay flips (Evolver's `u`)
-    /// inside the films, which turn a flat sliver into two good facets; not in a periodic
-    /// cluster.
+    /// inside the films, which turn a flat sliver into two good facets.
     bool flip_edges() {
-        if (c_.periodic() || r_.events.empty()) return false;
+        if (r_.events.empty()) return false;
         EquiangulateResult flipped = equiangulate(c_);
         if (!flipped.cluster) return false;
         r_.flipped_edges += flipped.flips;
