@@ -135,6 +135,23 @@ int l_refine(lua_State* L) {
     });
 }
 
+/// Replaces h's cluster by the one a transition made, and pushes the result table with the
+/// fields every transition has: {point, where, removed_vertices, energy_before, energy_after}.
+void apply_transition(lua_State* L, ClusterHandle& h, Cluster changed,
+                      const TransitionRecord& record) {
+    const double before = energy(h.cluster), after = energy(changed);
+    h.cluster = std::move(changed);
+    h.stepper.reset();
+    lua_createtable(L, 0, 8);
+    push_numbers(L, std::vector<double>{record.point.x(), record.point.y(), record.point.z()});
+    lua_setfield(L, -2, "point");
+    lua_pushstring(L, record.where.c_str());
+    lua_setfield(L, -2, "where");
+    set_integer(L, "removed_vertices", record.removed_vertices);
+    set_number(L, "energy_before", before);
+    set_number(L, "energy_after", after);
+}
+
 /// c:pop_body(b) -> {body, neighbours, point, where, removed_vertices, removed_facets,
 /// energy_before, energy_after}: Evolver's `pop` of a vanishing cell.
 int l_pop_body(lua_State* L) {
@@ -144,21 +161,10 @@ int l_pop_body(lua_State* L) {
     const int b = check_id(L, 2, h.cluster.n_bodies(), "body", "bodies");
     return guarded(L, [&] {
         TransitionRecord record;
-        Cluster popped = pop_body(h.cluster, b, &record); // throws before anything changes
-        const double before = energy(h.cluster), after = energy(popped);
-        h.cluster = std::move(popped);
-        h.stepper.reset();
-        lua_createtable(L, 0, 8);
+        apply_transition(L, h, pop_body(h.cluster, b, &record), record); // throws first
         set_integer(L, "body", b + 1);
         set_integer(L, "neighbours", record.neighbours);
-        push_numbers(L, std::vector<double>{record.point.x(), record.point.y(), record.point.z()});
-        lua_setfield(L, -2, "point");
-        lua_pushstring(L, record.where.c_str());
-        lua_setfield(L, -2, "where");
-        set_integer(L, "removed_vertices", record.removed_vertices);
         set_integer(L, "removed_facets", record.removed_facets);
-        set_number(L, "energy_before", before);
-        set_number(L, "energy_after", after);
         return 1;
     });
 }
@@ -173,21 +179,10 @@ int l_t1(lua_State* L) {
     const int line = check_id(L, 2, n, "triple line", "triple lines");
     return guarded(L, [&] {
         TransitionRecord record;
-        Cluster changed = t1_line_to_film(h.cluster, line, &record); // throws before any change
-        const double before = energy(h.cluster), after = energy(changed);
-        h.cluster = std::move(changed);
-        h.stepper.reset();
-        lua_createtable(L, 0, 7);
+        apply_transition(L, h, t1_line_to_film(h.cluster, line, &record), record); // throws first
         set_integer(L, "line", line + 1);
         push_integers(L, std::vector<int>{record.cells[0] + 1, record.cells[1] + 1});
         lua_setfield(L, -2, "cells");
-        push_numbers(L, std::vector<double>{record.point.x(), record.point.y(), record.point.z()});
-        lua_setfield(L, -2, "point");
-        lua_pushstring(L, record.where.c_str());
-        lua_setfield(L, -2, "where");
-        set_integer(L, "removed_vertices", record.removed_vertices);
-        set_number(L, "energy_before", before);
-        set_number(L, "energy_after", after);
         return 1;
     });
 }
@@ -202,39 +197,40 @@ double edge_length_option(lua_State* L, const char* op, const char* key) {
     return length;
 }
 
-/// c:collapse_edges{shorter_than} -> {collapsed, vertices}: Evolver's `t`.
-int l_collapse_edges(lua_State* L) {
+/// c:collapse_edges / c:split_edges: one length option, one upkeep pass that returns a new
+/// cluster (or none) and a count; the result is {<what> = count, vertices}.
+template <class Upkeep>
+int edge_upkeep(lua_State* L, const char* op, const char* key, const char* what, Upkeep upkeep) {
     ClusterHandle& h = self(L);
-    const double length = edge_length_option(L, "collapse_edges", "shorter_than");
-    ChangeGuard changing(L, h, "collapse_edges");
+    const double length = edge_length_option(L, op, key);
+    ChangeGuard changing(L, h, op);
     return guarded(L, [&] {
-        EdgeCollapseResult r = collapse_short_edges(h.cluster, length);
-        if (r.cluster) {
-            h.cluster = std::move(*r.cluster);
+        auto [cluster, count] = upkeep(h.cluster, length);
+        if (cluster) {
+            h.cluster = std::move(*cluster);
             h.stepper.reset();
         }
         lua_createtable(L, 0, 2);
-        set_integer(L, "collapsed", r.collapsed);
+        set_integer(L, what, count);
         set_integer(L, "vertices", h.cluster.n_vertices());
         return 1;
     });
 }
 
+/// c:collapse_edges{shorter_than} -> {collapsed, vertices}: Evolver's `t`.
+int l_collapse_edges(lua_State* L) {
+    return edge_upkeep(L, "collapse_edges", "shorter_than", "collapsed",
+                       [](const Cluster& c, double l) {
+                           EdgeCollapseResult r = collapse_short_edges(c, l);
+                           return std::make_pair(std::move(r.cluster), r.collapsed);
+                       });
+}
+
 /// c:split_edges{longer_than} -> {split, vertices}: Evolver's `l`.
 int l_split_edges(lua_State* L) {
-    ClusterHandle& h = self(L);
-    const double length = edge_length_option(L, "split_edges", "longer_than");
-    ChangeGuard changing(L, h, "split_edges");
-    return guarded(L, [&] {
-        EdgeSplitResult r = split_long_edges(h.cluster, length);
-        if (r.cluster) {
-            h.cluster = std::move(*r.cluster);
-            h.stepper.reset();
-        }
-        lua_createtable(L, 0, 2);
-        set_integer(L, "split", r.split);
-        set_integer(L, "vertices", h.cluster.n_vertices());
-        return 1;
+    return edge_upkeep(L, "split_edges", "longer_than", "split", [](const Cluster& c, double l) {
+        EdgeSplitResult r = split_long_edges(c, l);
+        return std::make_pair(std::move(r.cluster), r.split);
     });
 }
 
