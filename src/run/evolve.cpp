@@ -226,7 +226,8 @@ class Run {
 
     /// True if the watch saw a topology change coming that it could not get past; a crossing
     /// state is not a valid one, so then the cluster returns to the last state that passed the
-    /// crossing test. Vanishing bodies pop (EvolveOptions::transitions) while they can.
+    /// crossing test. With EvolveOptions::transitions the due T1s, pops and mesh upkeep are
+    /// made first, each followed by a new look.
     bool watch_for_topology() {
         std::optional<TopologyEvent> e;
         refused_.clear();
@@ -327,9 +328,9 @@ class Run {
         return true;
     }
 
-    /// The cluster after a transition: the stepper starts afresh, the state is the last one
-    /// without crossings, and the history gets a row for it (tau = 0) if it changed the
-    /// energy by more than round-off.
+    /// The cluster after a transition or upkeep: the stepper starts afresh, the state is the
+    /// last one without crossings, and for a transition (history_row_after) the history gets a
+    /// row for it (tau = 0), so that the energy's jump shows.
     void replace_cluster(Cluster changed, bool history_row_after = true) {
         c_ = std::move(changed);
         stepper_.reset();
