@@ -304,12 +304,12 @@ class Run {
     }
 
     /// Mesh upkeep for the films a transition makes grow: once the run has made one, edges
-    /// longer than twice the mean edge at the start of the run are split, and the films then
+    /// longer than the longest edge at the start of the run are split, and the films then
     /// flipped to Delaunay (the splits of a stretched facet leave fans of slivers). A run
     /// without transitions keeps its mesh as it is.
     bool split_edges() {
         if (r_.events.empty()) return false;
-        EdgeSplitResult split = split_long_edges(c_, 2 * h_start_);
+        EdgeSplitResult split = split_long_edges(c_, edges_start_.longest);
         if (!split.cluster) return false;
         r_.split_edges += split.split;
         replace_cluster(std::move(*split.cluster), false);
@@ -406,7 +406,7 @@ class Run {
     const int n_start_bodies_ = c_.n_bodies();
     std::vector<int> original_body_; // the bodies' ids at the start of the run
     std::string refused_;            // why a due T1 could not be made in this step
-    const double h_start_ = mean_edge_length(c_); // the mesh size the upkeep keeps
+    const EdgeLengths edges_start_ = edge_lengths(c_); // the mesh size the upkeep keeps
     static constexpr int kMaxTransitionsPerStep = 64;
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;

@@ -104,7 +104,7 @@ struct EvolveResult {
     std::optional<TopologyEvent> event; ///< set when the watch or a failing step stopped the run
     std::vector<TransitionEvent> events; ///< the transitions made, in order
     /// Mesh upkeep with transitions: short edges collapsed (at a "collapsing edge"); after a
-    /// transition long ones split (longer than twice the mean edge at the start) and edges
+    /// transition long ones split (longer than the longest edge at the start) and edges
     /// flipped (after the splits and at a "collapsing facet")
     int collapsed_edges = 0, split_edges = 0, flipped_edges = 0;
 };

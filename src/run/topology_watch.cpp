@@ -68,17 +68,22 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
 
 } // namespace
 
-double mean_edge_length(const Cluster& c) {
-    double sum = 0;
+EdgeLengths edge_lengths(const Cluster& c) {
+    double sum = 0, longest = 0;
     long count = 0;
     for (const Surface& s : c.surfaces())
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
             const auto x = s.corners(c.positions(), f);
-            for (int k = 0; k < 3; ++k) sum += (x[(k + 1) % 3] - x[k]).norm();
+            for (int k = 0; k < 3; ++k) {
+                const double l = (x[(k + 1) % 3] - x[k]).norm();
+                sum += l, longest = std::max(longest, l);
+            }
             count += 3;
         }
-    return count ? sum / count : 0;
+    return {count ? sum / count : 0, longest};
 }
+
+double mean_edge_length(const Cluster& c) { return edge_lengths(c).mean; }
 
 std::optional<int> shrinking_triple_line(const Cluster& c, double limit,
                                          const std::vector<int>& skip) {

@@ -37,8 +37,12 @@ struct TopologyEvent {
     int body = -1;       ///< "vanishing body": which (0-based)
 };
 
-/// The mean length of the facets' edges (each counted once per facet).
-double mean_edge_length(const Cluster& c);
+/// The mean and the longest length of the facets' edges (each counted once per facet).
+struct EdgeLengths {
+    double mean = 0, longest = 0;
+};
+EdgeLengths edge_lengths(const Cluster& c);
+double mean_edge_length(const Cluster& c); ///< edge_lengths(c).mean
 
 /// The shortest triple line between two distinct quadruple points that is shorter than
 /// `limit` (0-based id), if any; lines in `skip` are passed over.
