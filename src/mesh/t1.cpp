@@ -58,7 +58,8 @@ struct LineEnd {
 class T1 {
   public:
     T1(const Cluster& c, int line, double min_side)
-        : c_(c), line_(line), min_side_(min_side), name_(line_name(line)) {}
+        : c_(c), line_(line), min_side_(min_side), name_(line_name(line)),
+          cells_(surface_cells(c)) {}
 
     Cluster run(TransitionRecord* record);
 
@@ -68,9 +69,9 @@ class T1 {
     void unwrap_line();
     void place_corners();
     int corner_of(int film) const;
-    void collapse_line_films(ClusterSpec& spec) const;
+    void collapse_line_films(ClusterSpec& spec);
     Vec3 old_area(int surface, std::size_t facet) const;
-    void split_fans(ClusterSpec& spec, const LineEnd& end) const;
+    void split_fans(ClusterSpec& spec, const LineEnd& end);
     double mean_edge_at(int v) const;
     void check_no_facet_turns(const ClusterSpec& spec, const std::vector<Vec3>& V) const;
 
@@ -79,12 +80,13 @@ class T1 {
         int surface, facet;
         Vec3 area;
     };
-    mutable std::vector<Moved> moved_;
+    std::vector<Moved> moved_;
 
     const Cluster& c_;
     const int line_;
     const double min_side_;
     const std::string name_;
+    const std::vector<std::array<int, 2>> cells_; // the bodies on each surface's sides
     std::vector<int> seg_;                 // the line's vertices, a first
     std::map<int, Offset> d_;              // their lattice offsets along the line, from a
     std::map<int, Vec3> u_;                // their unwrapped positions
@@ -110,19 +112,17 @@ void T1::check_line() {
         if (c_.is_fixed(v) || c_.curve_point(v) || !c_.vertex_walls(v).empty())
             throw TopologyError(name_ + " has a fixed vertex or one on a wall (" +
                                 std::to_string(v + 1) + "); it cannot change");
-    const auto cells = surface_cells(c_);
-    for (int s : films_) line_cells_.insert(cells[s].begin(), cells[s].end());
+    for (int s : films_) line_cells_.insert(cells_[s].begin(), cells_[s].end());
 }
 
 LineEnd T1::end_at(int v) {
     LineEnd end;
     end.vertex = v;
-    const auto cells = surface_cells(c_);
     std::set<int> fourth;
     for (int s : surfaces_at(c_, v)) {
         if (std::find(films_.begin(), films_.end(), s) != films_.end()) continue;
         end.films.push_back(s);
-        for (int k : cells[s])
+        for (int k : cells_[s])
             if (!line_cells_.count(k)) fourth.insert(k);
     }
     if (end.films.size() != 3 || fourth.size() != 1)
@@ -227,7 +227,7 @@ int T1::corner_of(int film) const {
 
 /// In the line's films the line's vertices become the film's corner; facets with two or more
 /// corners on the line go.
-void T1::collapse_line_films(ClusterSpec& spec) const {
+void T1::collapse_line_films(ClusterSpec& spec) {
     const std::set<int> on_line(seg_.begin(), seg_.end());
     for (int i = 0; i < 3; ++i) {
         ClusterSpec::Surface& s = spec.surfaces[films_[i]];
@@ -263,7 +263,7 @@ void T1::collapse_line_films(ClusterSpec& spec) const {
 /// (v, u_j, u_{j+1})) from the triple line towards film X (u_0) to the one towards film Y
 /// (u_n) takes X's corner for j < m and Y's for j >= m, and the facet (p_X, u_m, p_Y) fills
 /// the gap (m = ceil(n / 2), so the facets at both triple lines take their own corner).
-void T1::split_fans(ClusterSpec& spec, const LineEnd& end) const {
+void T1::split_fans(ClusterSpec& spec, const LineEnd& end) {
     const int v = end.vertex;
     const Offset dv = d_.at(v);
     for (int si : end.films) {

@@ -200,26 +200,26 @@ Cluster pop_body(const Cluster& c, int b, TransitionRecord* record) {
     V[p_id] = P;
     const std::vector<int> used = surgery::keep_used_vertices(spec, V);
     surgery::copy_vertex_lists(c, [&](int old) { return id[old] < 0 ? -1 : used[id[old]]; }, spec);
-    std::optional<Cluster> r(surgery::rebuild(std::move(spec), body_name(b), "its collapse"));
+    Cluster r = surgery::rebuild(std::move(spec), body_name(b), "its collapse");
     const int p_new = used[p_id];
     if (p_new >= 0 &&
-        static_cast<int>(r->vertex_junction_edges(p_new).size()) != plateau_junction_edges(F))
+        static_cast<int>(r.vertex_junction_edges(p_new).size()) != plateau_junction_edges(F))
         throw TopologyError(body_name(b) + ": its " + std::to_string(F) + " neighbouring cells "
                             "would meet at the point in " +
-                            std::to_string(r->vertex_junction_edges(p_new).size()) +
+                            std::to_string(r.vertex_junction_edges(p_new).size()) +
                             " triple-line edges, not as at a Plateau point; refine the mesh "
                             "around the body first");
 
     for (std::size_t i = 0; i < kept_surfaces.size(); ++i) {
-        r->set_anisotropy(static_cast<int>(i), c.surface(kept_surfaces[i]).gamma);
-        r->set_mobility(static_cast<int>(i), c.surface(kept_surfaces[i]).beta);
+        r.set_anisotropy(static_cast<int>(i), c.surface(kept_surfaces[i]).gamma);
+        r.set_mobility(static_cast<int>(i), c.surface(kept_surfaces[i]).beta);
     }
-    r->set_time(c.time());
+    r.set_time(c.time());
     std::vector<double> initial, target;
     for (int k = 0; k < c.n_bodies(); ++k)
         if (k != b) initial.push_back(c.initial_volumes()[k]);
-    for (const Body& body : r->bodies()) target.push_back(body_volume(*r, body, r->positions()));
-    r->set_volume_references(std::move(initial), std::move(target));
+    for (const Body& body : r.bodies()) target.push_back(body_volume(r, body, r.positions()));
+    r.set_volume_references(std::move(initial), std::move(target));
 
     if (record) {
         const double volume = body_volume(c, c.bodies()[b], c.positions());
@@ -227,12 +227,12 @@ Cluster pop_body(const Cluster& c, int b, TransitionRecord* record) {
         record->body = b;
         record->point = P;
         record->neighbours = F;
-        record->removed_vertices = c.n_vertices() - r->n_vertices();
+        record->removed_vertices = c.n_vertices() - r.n_vertices();
         record->removed_facets = removed_facets;
         record->where = "body " + std::to_string(b + 1) + " (volume " + fmt(volume) + ", " +
                         std::to_string(F) + " neighbouring cells) at " + point_text(P);
     }
-    return std::move(*r);
+    return r;
 }
 
 } // namespace froth

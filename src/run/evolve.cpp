@@ -264,6 +264,7 @@ class Run {
     /// for the message of the event that will follow, and the line is not tried again this
     /// step).
     bool t1_shrinking_line() {
+        if (c_.quadruple_points().size() < 2) return false; // no such line: skip the edge scan
         const double limit = o_.watch.min_line_fraction * mean_edge_length(c_);
         std::vector<int> skip;
         for (;;) {
