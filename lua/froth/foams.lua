@@ -42,13 +42,15 @@ function M.weaire_phelan_foam(opts)
   })
 end
 
---- froth.foam{n = 64, seed = 1, volume = 1, h = 0.25 V^(1/3), equal_volumes = true}: the
---- Voronoi foam of n uniformly random sites in a periodic cube of volume n V (Lua's generator,
---- seeded: the same sites on every machine); with equal_volumes the target volume of every
---- cell is V (c:minimize{} then equalises them), else each keeps its Voronoi volume.
+--- froth.foam{n = 64, seed = 1, volume = 1, h = 0.25 V^(1/3), equal_volumes = true, lloyd = 0}:
+--- the Voronoi foam of n uniformly random sites in a periodic cube of volume n V (Lua's
+--- generator, seeded: the same sites on every machine), the sites first moved `lloyd` times to
+--- their cells' centroids; with equal_volumes the target volume of every cell is V
+--- (c:minimize{} then equalises them), else each keeps its Voronoi volume.
 function M.foam(opts)
   local name = "foam"
-  opts = options(name, opts, {n = true, seed = true, volume = true, h = true, equal_volumes = true})
+  opts = options(name, opts, {n = true, seed = true, volume = true, h = true, equal_volumes = true,
+                              lloyd = true})
   local n = number(name, opts, "n", 64)
   if math.type(n) ~= "integer" or n < 2 then fail(name, "n must be an integer >= 2, got %s", n) end
   local seed = number(name, opts, "seed", 1)
@@ -56,12 +58,17 @@ function M.foam(opts)
   local volume = positive(name, opts, "volume", 1)
   local h = positive(name, opts, "h", 0.25 * volume ^ (1 / 3))
   local equal = check.boolean(name, opts, "equal_volumes", true)
+  local lloyd = number(name, opts, "lloyd", 0)
+  if math.type(lloyd) ~= "integer" or lloyd < 0 then
+    fail(name, "lloyd must be an integer >= 0, got %s", lloyd)
+  end
   local side = (n * volume) ^ (1 / 3)
   local rng = math.random
   math.randomseed(seed)
   local sites = {}
   for i = 1, n do sites[i] = {side * rng(), side * rng(), side * rng()} end
-  local c = froth.voronoi_foam{sites = sites, period = {{side, 0, 0}, {0, side, 0}, {0, 0, side}}, h = h}
+  local period = {{side, 0, 0}, {0, side, 0}, {0, 0, side}}
+  local c = froth.voronoi_foam{sites = sites, period = period, h = h, lloyd = lloyd}
   if equal then
     for b = 1, n do c:set_volume(b, volume) end
   end

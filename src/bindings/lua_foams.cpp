@@ -1,5 +1,7 @@
-// froth.voronoi_foam{sites = {{x, y, z}, ...}, period = {a, b, c}, h = ...}: a periodic
-// cluster whose body k is the Voronoi cell of site k (foams/foam.h).
+// froth.voronoi_foam{sites = {{x, y, z}, ...}, period = {a, b, c}, h = ..., lloyd = 0}: a
+// periodic cluster whose body k is the Voronoi cell of site k, after `lloyd` relaxation steps
+// (foams/foam.h, foams/voronoi.h); froth.voronoi_cells{sites, period, lloyd}: the relaxed
+// sites and their cells' volumes and centroids.
 #include "bindings/lua_foams.h"
 
 #include "bindings/lua_cluster.h"
@@ -39,25 +41,70 @@ Eigen::Matrix3d read_period(lua_State* L, int idx, const char* op) {
 
 namespace {
 
-int l_voronoi_foam(lua_State* L) {
-    Options o(L, 1, "voronoi_foam");
+/// The options sites, period and lloyd that froth.voronoi_foam and froth.voronoi_cells share.
+struct Diagram {
+    std::vector<Vec3> sites;
+    Eigen::Matrix3d period;
+    int lloyd = 0;
+};
+
+Diagram read_diagram(lua_State* L, Options& o, const char* op) {
+    Diagram d;
     if (o.push("sites") == LUA_TNIL) o.error("sites", "is required");
-    const auto sites = read_vec3_list(L, -1, "voronoi_foam", "sites");
+    d.sites = read_vec3_list(L, -1, op, "sites");
     lua_pop(L, 1);
     if (o.push("period") == LUA_TNIL) o.error("period", "is required");
-    const Eigen::Matrix3d P = read_period(L, -1, "voronoi_foam");
+    d.period = read_period(L, -1, op);
     lua_pop(L, 1);
+    const long long lloyd = o.integer("lloyd", 0);
+    if (lloyd < 0 || lloyd > 10000) o.error("lloyd", "must be a count of steps from 0 to 10000");
+    d.lloyd = static_cast<int>(lloyd);
+    return d;
+}
+
+void push_vec3_list(lua_State* L, const std::vector<Vec3>& points) {
+    lua_createtable(L, static_cast<int>(points.size()), 0);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        push_numbers(L, points[i]);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+    }
+}
+
+int l_voronoi_foam(lua_State* L) {
+    Options o(L, 1, "voronoi_foam");
+    const Diagram d = read_diagram(L, o, "voronoi_foam");
     const double h = o.number("h");
     o.finish();
     return guarded(L, [&] {
-        FoamMesh mesh = voronoi_foam(sites, P, h);
+        FoamMesh mesh = voronoi_foam(lloyd_relax(d.sites, d.period, d.lloyd), d.period, h);
         push_cluster(L, std::move(mesh.spec));
+        return 1;
+    });
+}
+
+int l_voronoi_cells(lua_State* L) {
+    Options o(L, 1, "voronoi_cells");
+    const Diagram d = read_diagram(L, o, "voronoi_cells");
+    o.finish();
+    return guarded(L, [&] {
+        const std::vector<Vec3> sites = lloyd_relax(d.sites, d.period, d.lloyd);
+        const std::vector<VoronoiFace> faces = periodic_voronoi(sites, d.period);
+        const VoronoiCells cells = voronoi_cells(faces, static_cast<int>(sites.size()), d.period);
+        lua_createtable(L, 0, 4);
+        push_vec3_list(L, sites);
+        lua_setfield(L, -2, "sites");
+        push_numbers(L, cells.volumes);
+        lua_setfield(L, -2, "volumes");
+        push_vec3_list(L, cells.centroids);
+        lua_setfield(L, -2, "centroids");
+        set_integer(L, "faces", static_cast<long long>(faces.size()));
         return 1;
     });
 }
 
 const luaL_Reg functions[] = {
     {"voronoi_foam", l_voronoi_foam},
+    {"voronoi_cells", l_voronoi_cells},
     {nullptr, nullptr},
 };
 

@@ -27,6 +27,22 @@ struct VoronoiFace {
 /// fewer than three distinct corners); froth::Error saying so without CGAL.
 std::vector<VoronoiFace> periodic_voronoi(const std::vector<Vec3>& sites, const Eigen::Matrix3d& L);
 
+/// The volume and centroid of each cell of a periodic Voronoi diagram (`faces` as
+/// periodic_voronoi returns them for n sites in the box L), each centroid near the cell's site
+/// reduced into the box: exact for the flat cells (signed fans from each face's corner mean).
+/// Throws InvalidInput for a cell of no volume.
+struct VoronoiCells {
+    std::vector<double> volumes;
+    std::vector<Vec3> centroids;
+};
+VoronoiCells voronoi_cells(const std::vector<VoronoiFace>& faces, int n, const Eigen::Matrix3d& L);
+
+/// `iterations` steps of Lloyd's algorithm on the periodic diagram: every site moves to its
+/// cell's centroid (towards a centroidal Voronoi tessellation, whose cells are rounder, more
+/// equal in volume and have fewer short edges and small faces). Throws what periodic_voronoi
+/// throws, and InvalidInput for a negative count.
+std::vector<Vec3> lloyd_relax(std::vector<Vec3> sites, const Eigen::Matrix3d& L, int iterations);
+
 /// False when froth was built without CGAL.
 bool voronoi_available();
 

@@ -164,6 +164,58 @@ do
   T.assert_equal(d:energy(), c:energy(), "foam: the same seed, the same foam")
 end
 
+-- Voronoi cells and Lloyd's relaxation.
+do
+  local bcc = froth.voronoi_cells{sites = {{0, 0, 0}, {1, 1, 1}}, period = {{2, 0, 0}, {0, 2, 0}, {0, 0, 2}}}
+  T.assert_equal(bcc.faces, 14, "voronoi_cells: Kelvin's two cells share 14 faces (each 14-hedral)")
+  for b = 1, 2 do
+    T.assert_near(bcc.volumes[b], 4, 1e-12, "voronoi_cells: each BCC cell is half the box")
+    for d = 1, 3 do
+      T.assert_near(bcc.centroids[b][d], b - 1, 1e-12, "voronoi_cells: a BCC cell's centroid is its site")
+    end
+  end
+  local fixed = froth.voronoi_cells{sites = {{0, 0, 0}, {1, 1, 1}}, period = {{2, 0, 0}, {0, 2, 0}, {0, 0, 2}},
+                                    lloyd = 3}
+  T.assert_near(fixed.sites[2][1], 1, 1e-12, "lloyd: the BCC lattice is a fixed point")
+  -- Random sites: the cells fill the box, and relaxation moves sites towards their centroids
+  -- and evens out the volumes (a centroidal Voronoi tessellation in the limit).
+  local side, sites = 2, {}
+  math.randomseed(7)
+  for i = 1, 8 do sites[i] = {side * math.random(), side * math.random(), side * math.random()} end
+  local P = {{side, 0, 0}, {0, side, 0}, {0, 0, side}}
+  local function offset(cells) -- the largest distance of a site from its cell's centroid
+    local worst = 0
+    for i, s in ipairs(cells.sites) do
+      local r2 = 0
+      for d = 1, 3 do
+        local x = cells.centroids[i][d] - s[d]
+        x = x - side * math.floor(x / side + 0.5)
+        r2 = r2 + x * x
+      end
+      worst = math.max(worst, math.sqrt(r2))
+    end
+    return worst
+  end
+  local function spread(v)
+    local m, q = sum(v) / #v, 0
+    for _, x in ipairs(v) do q = q + (x - m) ^ 2 end
+    return math.sqrt(q / #v) / m
+  end
+  local raw = froth.voronoi_cells{sites = sites, period = P}
+  local relaxed = froth.voronoi_cells{sites = sites, period = P, lloyd = 30}
+  T.assert_near(sum(raw.volumes), side ^ 3, 1e-12, "voronoi_cells: the cells fill the box")
+  T.assert_near(sum(relaxed.volumes), side ^ 3, 1e-12, "lloyd: and still fill it")
+  T.assert_true(offset(relaxed) < 0.1 * offset(raw), "lloyd: sites move onto their centroids",
+                offset(raw) .. " -> " .. offset(relaxed))
+  T.assert_true(spread(relaxed.volumes) < 0.5 * spread(raw.volumes), "lloyd: the volumes even out",
+                spread(raw.volumes) .. " -> " .. spread(relaxed.volumes))
+  local c = froth.foam{n = 8, seed = 3, h = 0.3, lloyd = 10, equal_volumes = false}
+  T.assert_equal(#relaxed.sites * 100 + #relaxed.volumes, 808, "voronoi_cells: one site and volume per cell")
+  local v = c:volumes()
+  local w = froth.foam{n = 8, seed = 3, h = 0.3, equal_volumes = false}:volumes()
+  T.assert_true(spread(v) < spread(w), "foam{lloyd}: relaxed cells are more equal", spread(w) .. " -> " .. spread(v))
+end
+
 -- Errors.
 local function slab(z)
   local V, F = {}, {}
@@ -223,4 +275,9 @@ T.check_error("take a larger h", froth.voronoi_foam,
               {sites = {{0, 0, 0}, {0.5, 0.5, 0.5}}, period = unit, h = 1e-5})
 T.check_error("kelvin_foam: unknown option 'n'", froth.kelvin_foam, {n = 3})
 T.check_error("foam: n must be an integer >= 2", froth.foam, {n = 1})
+T.check_error("foam: lloyd must be an integer >= 0", froth.foam, {n = 4, lloyd = -1})
+T.check_error("voronoi_foam: option 'lloyd' must be a count of steps from 0 to 10000", froth.voronoi_foam,
+              {sites = {{0, 0, 0}, {0.5, 0.5, 0.5}}, period = unit, h = 0.3, lloyd = -2})
+T.check_error("voronoi_cells: option 'period' is required", froth.voronoi_cells, {sites = {{0, 0, 0}}})
+T.check_error("two sites coincide", froth.voronoi_cells, {sites = {{0, 0, 0}, {1, 1, 1}}, period = unit})
 T.summary()
