@@ -42,15 +42,16 @@ function M.weaire_phelan_foam(opts)
   })
 end
 
---- froth.foam{n = 64, seed = 1, volume = 1, h = 0.25 V^(1/3), equal_volumes = true, lloyd = 0}:
---- the Voronoi foam of n uniformly random sites in a periodic cube of volume n V (Lua's
---- generator, seeded: the same sites on every machine), the sites first moved `lloyd` times to
---- their cells' centroids; with equal_volumes the target volume of every cell is V
---- (c:minimize{} then equalises them), else each keeps its Voronoi volume.
+--- froth.foam{n = 64, seed = 1, volume = 1, h = 0.25 V^(1/3), equal_volumes = true, lloyd = 0,
+--- mesher = "gmsh" (with gmsh, else "fan")}: the Voronoi foam of n uniformly random sites in a
+--- periodic cube of volume n V (Lua's generator, seeded: the same sites on every machine), the
+--- sites first moved `lloyd` times to their cells' centroids; with equal_volumes the target
+--- volume of every cell is V (c:minimize{} then equalises them), else each keeps its Voronoi
+--- volume.
 function M.foam(opts)
   local name = "foam"
   opts = options(name, opts, {n = true, seed = true, volume = true, h = true, equal_volumes = true,
-                              lloyd = true})
+                              lloyd = true, mesher = true})
   local n = number(name, opts, "n", 64)
   if math.type(n) ~= "integer" or n < 2 then fail(name, "n must be an integer >= 2, got %s", n) end
   local seed = number(name, opts, "seed", 1)
@@ -67,8 +68,13 @@ function M.foam(opts)
   math.randomseed(seed)
   local sites = {}
   for i = 1, n do sites[i] = {side * rng(), side * rng(), side * rng()} end
+  local mesher = opts.mesher
+  if mesher == nil then mesher = froth.has("gmsh") and "gmsh" or "fan" end
+  if mesher ~= "gmsh" and mesher ~= "fan" then
+    fail(name, "mesher must be \"gmsh\" or \"fan\", got %s", tostring(mesher))
+  end
   local period = {{side, 0, 0}, {0, side, 0}, {0, 0, side}}
-  local c = froth.voronoi_foam{sites = sites, period = period, h = h, lloyd = lloyd}
+  local c = froth.voronoi_foam{sites = sites, period = period, h = h, lloyd = lloyd, mesher = mesher}
   if equal then
     for b = 1, n do c:set_volume(b, volume) end
   end

@@ -8,6 +8,12 @@
 #include "bindings/luax.h"
 #include "foams/foam.h"
 
+#ifdef FROTH_HAVE_GMSH
+#include "bindings/gmsh_plugin.h"
+#endif
+
+#include <string>
+
 namespace froth::lua {
 
 std::vector<Eigen::Vector3d> read_vec3_list(lua_State* L, int idx, const char* op, const char* name) {
@@ -70,13 +76,28 @@ void push_vec3_list(lua_State* L, const std::vector<Vec3>& points) {
     }
 }
 
+/// mesher = "fan" (the split fans, foams/foam.h) or "gmsh" (graded, builders/gmsh_builder.h).
+PolygonMesher read_mesher(lua_State* L, Options& o) {
+    const std::string name = o.string("mesher", "fan");
+    if (name == "fan") return {};
+    if (name != "gmsh") o.error("mesher", "must be \"fan\" or \"gmsh\"");
+#ifdef FROTH_HAVE_GMSH
+    return [](const std::vector<std::vector<Vec3>>& polygons, const std::vector<std::vector<int>>& segments,
+              double h) { return gmsh_builders().planar_polygons({polygons, segments, h}); };
+#else
+    luaL_error(L, "voronoi_foam: mesher \"gmsh\" needs froth built with gmsh (froth.has(\"gmsh\") is false)");
+    return {};
+#endif
+}
+
 int l_voronoi_foam(lua_State* L) {
     Options o(L, 1, "voronoi_foam");
     const Diagram d = read_diagram(L, o, "voronoi_foam");
     const double h = o.number("h");
+    const PolygonMesher mesher = read_mesher(L, o);
     o.finish();
     return guarded(L, [&] {
-        FoamMesh mesh = voronoi_foam(lloyd_relax(d.sites, d.period, d.lloyd), d.period, h);
+        FoamMesh mesh = voronoi_foam(lloyd_relax(d.sites, d.period, d.lloyd), d.period, h, mesher);
         push_cluster(L, std::move(mesh.spec));
         return 1;
     });

@@ -1,4 +1,5 @@
-// The double bubble and the sphere (the session and extraction: gmsh_session.cpp).
+// The double bubble, the sphere and flat polygons (the session and extraction:
+// gmsh_session.cpp).
 #include "builders/gmsh_builder.h"
 
 #include "builders/gmsh_session.h"
@@ -96,6 +97,52 @@ ClusterSpec build_sphere(const SphereOptions& o) {
         for (Vec3& x : spec.vertices)
             x = o.center + o.R * x;
         return spec;
+    });
+}
+
+namespace {
+
+void check_polygons(const PlanarPolygonsOptions& o, const std::string& op) {
+    if (!(std::isfinite(o.h) && o.h > 0)) throw InvalidInput(op + ": h must be positive, got " + num(o.h));
+    if (o.segments.size() != o.polygons.size())
+        throw InvalidInput(op + ": one list of edge cuts per polygon is needed");
+    for (std::size_t f = 0; f < o.polygons.size(); ++f) {
+        const std::string which = op + ": polygon " + std::to_string(f + 1);
+        if (o.polygons[f].size() < 3) throw InvalidInput(which + " has fewer than 3 corners");
+        if (o.segments[f].size() != o.polygons[f].size())
+            throw InvalidInput(which + " needs one cut count per edge");
+        for (int m : o.segments[f])
+            if (m < 1) throw InvalidInput(which + ": an edge must be cut into at least 1 piece");
+    }
+}
+
+/// Adds polygon f as a geo plane surface whose edges are transfinite lines of the given
+/// counts (so gmsh cuts them exactly so); returns the surface's tag.
+int add_polygon(const std::vector<Vec3>& corners, const std::vector<int>& segments, double h) {
+    namespace geo = gmsh::model::geo;
+    std::vector<int> points, lines;
+    for (const Vec3& x : corners)
+        points.push_back(geo::addPoint(x[0], x[1], x[2], h));
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        lines.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
+        geo::mesh::setTransfiniteCurve(lines.back(), segments[i] + 1);
+    }
+    return geo::addPlaneSurface({geo::addCurveLoop(lines)});
+}
+
+} // namespace
+
+ClusterSpec build_planar_polygons(const PlanarPolygonsOptions& o) {
+    const std::string op = "foam mesher";
+    check_polygons(o, op);
+    return in_session<GeometryError>(op + ": gmsh failed: ", [&] {
+        gmsh::model::add("polygons");
+        std::vector<FilmPlan> films(o.polygons.size());
+        for (std::size_t f = 0; f < o.polygons.size(); ++f)
+            films[f].entities = {add_polygon(o.polygons[f], o.segments[f], o.h)};
+        gmsh::model::geo::synchronize();
+        mesh_surfaces(o.h);
+        return extract(films, {}, op);
     });
 }
 

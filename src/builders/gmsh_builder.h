@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace froth {
 
@@ -31,5 +32,20 @@ struct SphereOptions {
 /// One spherical surface (sigma 1) enclosing one body.
 /// \throw InvalidInput for bad options, GeometryError if gmsh fails.
 ClusterSpec build_sphere(const SphereOptions& options);
+
+struct PlanarPolygonsOptions {
+    std::vector<std::vector<Vec3>> polygons; ///< flat convex polygons, corners in cyclic order
+    /// segments[f][i]: the number of equal pieces edge i (corner i to i + 1) of polygon f is cut
+    /// into, at least 1; polygons that share an edge must cut it alike.
+    std::vector<std::vector<int>> segments;
+    double h = 0.1; ///< the largest interior edge length (Mesh.MeshSizeMax)
+};
+/// One surface per polygon (no bodies, no shared vertices: polygon f's boundary points are
+/// exactly its corners and the equal cuts of its edges), each meshed by gmsh's Frontal-Delaunay
+/// with sizes graded from the boundary's pieces up to h, so that a short edge gets small
+/// well-shaped triangles instead of slivers; triangles in either orientation.
+/// \throw InvalidInput for mismatched sizes, a polygon of fewer than 3 corners, a count
+/// below 1 or h not positive; GeometryError if gmsh fails.
+ClusterSpec build_planar_polygons(const PlanarPolygonsOptions& options);
 
 } // namespace froth

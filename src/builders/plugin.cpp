@@ -15,12 +15,15 @@ ClusterSpec isolated_sphere(const SphereOptions& o) {
 ClusterSpec isolated_fragment(const FragmentOptions& o) {
     return run_isolated(o.op, [&] { return build_fragment(o); });
 }
+ClusterSpec isolated_planar_polygons(const PlanarPolygonsOptions& o) {
+    return run_isolated("foam mesher", [&] { return build_planar_polygons(o); });
+}
 
 } // namespace
 
 const GmshBuilders& gmsh_builders_table() {
     static const GmshBuilders table{&isolated_double_bubble, &isolated_sphere, &isolated_fragment,
-                                    &use_interrupt_flag};
+                                    &isolated_planar_polygons, &use_interrupt_flag};
     return table;
 }
 

@@ -15,6 +15,7 @@ struct GmshBuilders {
     ClusterSpec (*double_bubble)(const DoubleBubbleOptions&);
     ClusterSpec (*sphere)(const SphereOptions&);
     ClusterSpec (*fragment)(const FragmentOptions&);
+    ClusterSpec (*planar_polygons)(const PlanarPolygonsOptions&);
     /// The plugin links its own copy of froth_core, so its Ctrl-C flag is not the
     /// executable's: the loader hands over the executable's (builders/isolated.h polls it).
     void (*use_interrupt_flag)(const InterruptFlag&);

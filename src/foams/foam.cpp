@@ -6,11 +6,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace froth {
 namespace {
 
 constexpr int kMaxSplits = 4096;
+constexpr int kMinPieces = 2;
 
 /// The fan of a convex polygon from its centroid, each fan triangle (c, p_i, p_i+1) split
 /// into n^2 by the lattice c + (p_i - c) i/n + (p_i+1 - c) j/n, appended to spec as points
@@ -39,12 +42,50 @@ void add_split_fan(const std::vector<Vec3>& polygon, int n, ClusterSpec& spec,
     }
 }
 
-} // namespace
+Vec3 newell_normal(const std::vector<Vec3>& polygon) {
+    Vec3 normal = Vec3::Zero();
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+        normal += polygon[i].cross(polygon[(i + 1) % polygon.size()]);
+    return normal;
+}
 
-FoamMesh voronoi_foam(const std::vector<Vec3>& sites, const Eigen::Matrix3d& L, double h) {
-    if (!(std::isfinite(h) && h > 0)) throw InvalidInput("foam: h must be positive, got " + fmt(h));
-    const std::vector<VoronoiFace> faces = periodic_voronoi(sites, L);
-    double longest = 0; // of the fans' spokes and rims
+/// The faces meshed by `mesher`, each edge cut into ceil(length / h) pieces, each triangle
+/// turned to its face's normal (from a to b: the orientation the fan gives); the mesher's
+/// vertices are the spec's, merged across faces by identify_periodic_images afterwards.
+ClusterSpec mesh_faces(const std::vector<VoronoiFace>& faces, double h, const PolygonMesher& mesher) {
+    std::vector<std::vector<Vec3>> polygons;
+    std::vector<std::vector<int>> segments;
+    for (const VoronoiFace& f : faces) {
+        polygons.push_back(f.polygon);
+        segments.emplace_back();
+        for (std::size_t k = 0; k < f.polygon.size(); ++k) {
+            // Both films of an edge see the same corners up to round-off: the 1e-9 keeps an
+            // edge of exactly m h from being cut into m by one and m + 1 by the other.
+            const double pieces = std::ceil((f.polygon[(k + 1) % f.polygon.size()] - f.polygon[k]).norm() / h - 1e-9);
+            if (!(pieces <= kMaxSplits))
+                throw InvalidInput("foam: h = " + fmt(h) + " would cut a Voronoi edge into " + fmt(pieces) +
+                                   " pieces (at most " + std::to_string(kMaxSplits) + "); take a larger h");
+            segments.back().push_back(std::max(kMinPieces, static_cast<int>(pieces)));
+        }
+    }
+    ClusterSpec spec = mesher(polygons, segments, h);
+    if (spec.surfaces.size() != faces.size())
+        throw GeometryError("foam: the mesher returned " + std::to_string(spec.surfaces.size()) +
+                            " surfaces for " + std::to_string(faces.size()) + " Voronoi faces");
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        const Vec3 normal = newell_normal(faces[f].polygon);
+        for (auto& t : spec.surfaces[f].triangles) {
+            const Vec3 &a = spec.vertices[t[0]], &b = spec.vertices[t[1]], &c = spec.vertices[t[2]];
+            if ((b - a).cross(c - a).dot(normal) < 0) std::swap(t[1], t[2]);
+        }
+    }
+    spec.bodies.clear();
+    return spec;
+}
+
+/// The longest spoke or rim of the faces' fans, which sets the fan's split count.
+double longest_fan_edge(const std::vector<VoronoiFace>& faces) {
+    double longest = 0;
     for (const VoronoiFace& f : faces) {
         Vec3 center = Vec3::Zero();
         for (const Vec3& p : f.polygon) center += p;
@@ -53,20 +94,33 @@ FoamMesh voronoi_foam(const std::vector<Vec3>& sites, const Eigen::Matrix3d& L, 
             longest = std::max({longest, (f.polygon[k] - center).norm(),
                                 (f.polygon[(k + 1) % f.polygon.size()] - f.polygon[k]).norm()});
     }
-    const double splits = std::ceil(longest / h);
-    if (!(splits <= kMaxSplits))
-        throw InvalidInput("foam: h = " + fmt(h) + " would split each fan triangle " + fmt(splits) +
-                           " times (at most " + std::to_string(kMaxSplits) + "); take a larger h");
+    return longest;
+}
+
+} // namespace
+
+FoamMesh voronoi_foam(const std::vector<Vec3>& sites, const Eigen::Matrix3d& L, double h,
+                      const PolygonMesher& mesher) {
+    if (!(std::isfinite(h) && h > 0)) throw InvalidInput("foam: h must be positive, got " + fmt(h));
+    const std::vector<VoronoiFace> faces = periodic_voronoi(sites, L);
     FoamMesh out;
-    out.splits = std::max(1, static_cast<int>(splits));
-    out.spec.bodies.resize(sites.size());
-    for (const VoronoiFace& f : faces) {
-        ClusterSpec::Surface surface;
-        add_split_fan(f.polygon, out.splits, out.spec, surface);
-        const int id = static_cast<int>(out.spec.surfaces.size());
-        out.spec.surfaces.push_back(std::move(surface));
-        out.spec.bodies[f.a].push_back(id);
-        out.spec.bodies[f.b].push_back(id); // twice when a cell meets its own image
+    if (mesher) {
+        out.spec = mesh_faces(faces, h, mesher);
+    } else {
+        const double splits = std::ceil(longest_fan_edge(faces) / h);
+        if (!(splits <= kMaxSplits))
+            throw InvalidInput("foam: h = " + fmt(h) + " would split each fan triangle " + fmt(splits) +
+                               " times (at most " + std::to_string(kMaxSplits) + "); take a larger h");
+        out.splits = std::max(1, static_cast<int>(splits));
+        for (const VoronoiFace& f : faces) {
+            out.spec.surfaces.emplace_back();
+            add_split_fan(f.polygon, out.splits, out.spec, out.spec.surfaces.back());
+        }
+    }
+    out.spec.bodies.resize(sites.size()); // surface f is face f
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        out.spec.bodies[faces[f].a].push_back(static_cast<int>(f));
+        out.spec.bodies[faces[f].b].push_back(static_cast<int>(f)); // twice: a cell meets its image
     }
     identify_periodic_images(out.spec, L);
     return out;

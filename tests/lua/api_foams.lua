@@ -216,6 +216,50 @@ do
   T.assert_true(spread(v) < spread(w), "foam{lloyd}: relaxed cells are more equal", spread(w) .. " -> " .. spread(v))
 end
 
+-- The gmsh mesher: the same flat cells as the fans (volumes exactly the diagram's, so every
+-- film closes up with its neighbours), each Voronoi edge cut alike for its three films, and
+-- far fewer needle triangles at the diagram's short edges.
+if froth.has("gmsh") then
+  local side, sites = 2, {}
+  math.randomseed(5)
+  for i = 1, 8 do sites[i] = {side * math.random(), side * math.random(), side * math.random()} end
+  local P = {{side, 0, 0}, {0, side, 0}, {0, 0, side}}
+  local g = froth.voronoi_foam{sites = sites, period = P, h = 0.3, mesher = "gmsh"}
+  local f = froth.voronoi_foam{sites = sites, period = P, h = 0.3}
+  local cells = froth.voronoi_cells{sites = sites, period = P}
+  for b = 1, 8 do
+    T.assert_near(g:volumes()[b], cells.volumes[b], 1e-12, "gmsh mesher: cell " .. b .. " is its Voronoi cell")
+  end
+  T.assert_near(g:area(), f:area(), 1e-10 * f:area(), "gmsh mesher: the films' area is the fans'")
+  T.assert_equal(#g:triple_lines() * 1000 + #g:quadruple_points(), #f:triple_lines() * 1000 + #f:quadruple_points(),
+                 "gmsh mesher: the same junctions")
+  local function needles(c) -- facet corners below 5 degrees
+    local X, count = {}, 0
+    for _, v in ipairs(c:vertices()) do X[v.id] = v.x end
+    for _, t in ipairs(c:facets()) do
+      for k = 1, 3 do
+        local a, b, d = X[t.vertices[k]], X[t.vertices[k % 3 + 1]], X[t.vertices[(k + 1) % 3 + 1]]
+        local dot, nu, nw = 0, 0, 0
+        for i = 1, 3 do
+          dot = dot + (b[i] - a[i]) * (d[i] - a[i])
+          nu, nw = nu + (b[i] - a[i]) ^ 2, nw + (d[i] - a[i]) ^ 2
+        end
+        if dot / math.sqrt(nu * nw) > math.cos(math.rad(5)) then count = count + 1 end
+      end
+    end
+    return count
+  end
+  T.assert_true(needles(g) < 0.25 * needles(f), "gmsh mesher: fewer needles than the fans",
+                needles(g) .. " against " .. needles(f))
+  T.assert_true(g:info().vertices < f:info().vertices, "gmsh mesher: fewer vertices at the same h",
+                g:info().vertices .. " against " .. f:info().vertices)
+  local r = froth.foam{n = 8, seed = 3, h = 0.3}
+  T.assert_near(sum(r:volumes()), 8, 1e-12, "foam: meshed by gmsh by default, filling the box")
+  T.check_error("foam: mesher must be \"gmsh\" or \"fan\"", froth.foam, {n = 4, mesher = "tri"})
+  T.check_error("voronoi_foam: option 'mesher' must be \"fan\" or \"gmsh\"", froth.voronoi_foam,
+                {sites = sites, period = P, h = 0.3, mesher = "tri"})
+end
+
 -- Errors.
 local function slab(z)
   local V, F = {}, {}
@@ -246,7 +290,7 @@ k:set_volume(1, 1.5)
 T.check_error("their target volumes must add up to its volume 2", k.minimize, k, {})
 T.check_error("step: the cells fill the periodic box", k.step, k, {flow = "sd", tau = 1e-3})
 do -- flips across the box: a fresh random foam's films are flat, so flips keep area and volumes
-  local f = froth.foam{n = 8, h = 0.3}
+  local f = froth.foam{n = 8, h = 0.3, mesher = "fan"}
   local A, V, lines, quads = f:area(), f:volumes(), #f:triple_lines(), #f:quadruple_points()
   local q = f:equiangulate()
   T.assert_true(q.flips > 0, "equiangulate flips the Voronoi fans' slivers", tostring(q.flips))
