@@ -82,8 +82,10 @@ PolygonMesher read_mesher(lua_State* L, Options& o) {
     if (name == "fan") return {};
     if (name != "gmsh") o.error("mesher", "must be \"fan\" or \"gmsh\"");
 #ifdef FROTH_HAVE_GMSH
-    return [](const std::vector<std::vector<Vec3>>& polygons, const std::vector<std::vector<int>>& segments,
-              double h) { return gmsh_builders().planar_polygons({polygons, segments, h}); };
+    (void)L;
+    return [](const std::vector<std::vector<Vec3>>& boundaries, double h) {
+        return gmsh_builders().planar_polygons({boundaries, h});
+    };
 #else
     luaL_error(L, "voronoi_foam: mesher \"gmsh\" needs froth built with gmsh (froth.has(\"gmsh\") is false)");
     return {};

@@ -104,28 +104,26 @@ namespace {
 
 void check_polygons(const PlanarPolygonsOptions& o, const std::string& op) {
     if (!(std::isfinite(o.h) && o.h > 0)) throw InvalidInput(op + ": h must be positive, got " + num(o.h));
-    if (o.segments.size() != o.polygons.size())
-        throw InvalidInput(op + ": one list of edge cuts per polygon is needed");
-    for (std::size_t f = 0; f < o.polygons.size(); ++f) {
-        const std::string which = op + ": polygon " + std::to_string(f + 1);
-        if (o.polygons[f].size() < 3) throw InvalidInput(which + " has fewer than 3 corners");
-        if (o.segments[f].size() != o.polygons[f].size())
-            throw InvalidInput(which + " needs one cut count per edge");
-        for (int m : o.segments[f])
-            if (m < 1) throw InvalidInput(which + ": an edge must be cut into at least 1 piece");
-    }
+    for (std::size_t f = 0; f < o.boundaries.size(); ++f)
+        if (o.boundaries[f].size() < 3)
+            throw InvalidInput(op + ": polygon " + std::to_string(f + 1) + " has fewer than 3 points");
 }
 
-/// Adds polygon f as a geo plane surface whose edges are transfinite lines of the given
-/// counts (so gmsh cuts them exactly so); returns the surface's tag.
-int add_polygon(const std::vector<Vec3>& corners, const std::vector<int>& segments, double h) {
+/// Adds a polygon as a geo plane surface of one line per boundary segment, each transfinite
+/// with no inner node (so gmsh keeps the segments), each point sized by its shorter segment
+/// (so the triangles grade from the segments up to h); returns the surface's tag.
+int add_polygon(const std::vector<Vec3>& boundary, double h) {
     namespace geo = gmsh::model::geo;
+    const std::size_t n = boundary.size();
     std::vector<int> points, lines;
-    for (const Vec3& x : corners)
-        points.push_back(geo::addPoint(x[0], x[1], x[2], h));
-    for (std::size_t i = 0; i < corners.size(); ++i) {
-        lines.push_back(geo::addLine(points[i], points[(i + 1) % points.size()]));
-        geo::mesh::setTransfiniteCurve(lines.back(), segments[i] + 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& x = boundary[i];
+        const double size = std::min({h, (boundary[(i + 1) % n] - x).norm(), (boundary[(i + n - 1) % n] - x).norm()});
+        points.push_back(geo::addPoint(x[0], x[1], x[2], size));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        lines.push_back(geo::addLine(points[i], points[(i + 1) % n]));
+        geo::mesh::setTransfiniteCurve(lines.back(), 2);
     }
     return geo::addPlaneSurface({geo::addCurveLoop(lines)});
 }
@@ -137,9 +135,9 @@ ClusterSpec build_planar_polygons(const PlanarPolygonsOptions& o) {
     check_polygons(o, op);
     return in_session<GeometryError>(op + ": gmsh failed: ", [&] {
         gmsh::model::add("polygons");
-        std::vector<FilmPlan> films(o.polygons.size());
-        for (std::size_t f = 0; f < o.polygons.size(); ++f)
-            films[f].entities = {add_polygon(o.polygons[f], o.segments[f], o.h)};
+        std::vector<FilmPlan> films(o.boundaries.size());
+        for (std::size_t f = 0; f < o.boundaries.size(); ++f)
+            films[f].entities = {add_polygon(o.boundaries[f], o.h)};
         gmsh::model::geo::synchronize();
         mesh_surfaces(o.h);
         return extract(films, {}, op);

@@ -34,18 +34,16 @@ struct SphereOptions {
 ClusterSpec build_sphere(const SphereOptions& options);
 
 struct PlanarPolygonsOptions {
-    std::vector<std::vector<Vec3>> polygons; ///< flat convex polygons, corners in cyclic order
-    /// segments[f][i]: the number of equal pieces edge i (corner i to i + 1) of polygon f is cut
-    /// into, at least 1; polygons that share an edge must cut it alike.
-    std::vector<std::vector<int>> segments;
+    /// flat convex polygons by all their boundary points in cyclic order (corners and cuts)
+    std::vector<std::vector<Vec3>> boundaries;
     double h = 0.1; ///< the largest interior edge length (Mesh.MeshSizeMax)
 };
-/// One surface per polygon (no bodies, no shared vertices: polygon f's boundary points are
-/// exactly its corners and the equal cuts of its edges), each meshed by gmsh's Frontal-Delaunay
-/// with sizes graded from the boundary's pieces up to h, so that a short edge gets small
-/// well-shaped triangles instead of slivers; triangles in either orientation.
-/// \throw InvalidInput for mismatched sizes, a polygon of fewer than 3 corners, a count
-/// below 1 or h not positive; GeometryError if gmsh fails.
+/// One surface per polygon (no bodies, no shared vertices), each meshed by gmsh's
+/// Frontal-Delaunay keeping every boundary segment as an edge (polygon f's boundary points
+/// are exactly the given ones), with sizes graded from the segments next to each point up to
+/// h; triangles in either orientation.
+/// \throw InvalidInput for a polygon of fewer than 3 points or h not positive;
+/// GeometryError if gmsh fails.
 ClusterSpec build_planar_polygons(const PlanarPolygonsOptions& options);
 
 } // namespace froth

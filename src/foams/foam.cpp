@@ -13,7 +13,6 @@ namespace froth {
 namespace {
 
 constexpr int kMaxSplits = 4096;
-constexpr int kMinPieces = 2;
 
 /// The fan of a convex polygon from its centroid, each fan triangle (c, p_i, p_i+1) split
 /// into n^2 by the lattice c + (p_i - c) i/n + (p_i+1 - c) j/n, appended to spec as points
@@ -49,26 +48,12 @@ Vec3 newell_normal(const std::vector<Vec3>& polygon) {
     return normal;
 }
 
-/// The faces meshed by `mesher`, each edge cut into ceil(length / h) pieces, each triangle
-/// turned to its face's normal (from a to b: the orientation the fan gives); the mesher's
-/// vertices are the spec's, merged across faces by identify_periodic_images afterwards.
-ClusterSpec mesh_faces(const std::vector<VoronoiFace>& faces, double h, const PolygonMesher& mesher) {
-    std::vector<std::vector<Vec3>> polygons;
-    std::vector<std::vector<int>> segments;
-    for (const VoronoiFace& f : faces) {
-        polygons.push_back(f.polygon);
-        segments.emplace_back();
-        for (std::size_t k = 0; k < f.polygon.size(); ++k) {
-            // Both films of an edge see the same corners up to round-off: the 1e-9 keeps an
-            // edge of exactly m h from being cut into m by one and m + 1 by the other.
-            const double pieces = std::ceil((f.polygon[(k + 1) % f.polygon.size()] - f.polygon[k]).norm() / h - 1e-9);
-            if (!(pieces <= kMaxSplits))
-                throw InvalidInput("foam: h = " + fmt(h) + " would cut a Voronoi edge into " + fmt(pieces) +
-                                   " pieces (at most " + std::to_string(kMaxSplits) + "); take a larger h");
-            segments.back().push_back(std::max(kMinPieces, static_cast<int>(pieces)));
-        }
-    }
-    ClusterSpec spec = mesher(polygons, segments, h);
+/// The faces meshed by `mesher` on their graded boundaries, each triangle turned to its
+/// face's normal (from a to b: the orientation the fan gives); the mesher's vertices are the
+/// spec's, merged across faces by identify_periodic_images afterwards.
+ClusterSpec mesh_faces(const std::vector<VoronoiFace>& faces, const Eigen::Matrix3d& L, double h,
+                       const PolygonMesher& mesher) {
+    ClusterSpec spec = mesher(graded_boundaries(faces, L, h), h);
     if (spec.surfaces.size() != faces.size())
         throw GeometryError("foam: the mesher returned " + std::to_string(spec.surfaces.size()) +
                             " surfaces for " + std::to_string(faces.size()) + " Voronoi faces");
@@ -105,7 +90,7 @@ FoamMesh voronoi_foam(const std::vector<Vec3>& sites, const Eigen::Matrix3d& L, 
     const std::vector<VoronoiFace> faces = periodic_voronoi(sites, L);
     FoamMesh out;
     if (mesher) {
-        out.spec = mesh_faces(faces, h, mesher);
+        out.spec = mesh_faces(faces, L, h, mesher);
     } else {
         const double splits = std::ceil(longest_fan_edge(faces) / h);
         if (!(splits <= kMaxSplits))

@@ -18,20 +18,24 @@ struct FoamMesh {
     int splits = 0; ///< n: each fan triangle is split into n^2 (0 with a PolygonMesher)
 };
 
-/// Meshes flat convex polygons: given every face's corners and, per edge i (corner i to
-/// i + 1), the number of equal pieces to cut it into, returns one surface per polygon whose
-/// boundary points are exactly the corners and the cuts (triangles in either orientation).
-/// The bindings pass gmsh's (builders/gmsh_builder.h: build_planar_polygons), which grades
-/// the triangles from a short edge's small pieces up to h; the foams module sees no gmsh.
-using PolygonMesher = std::function<ClusterSpec(const std::vector<std::vector<Vec3>>& polygons,
-                                                const std::vector<std::vector<int>>& segments, double h)>;
+/// Meshes flat convex polygons given by all their boundary points in order (corners and the
+/// cuts of their edges), keeping every boundary segment as an edge: one surface per polygon
+/// (triangles in either orientation), interior edges up to h. The bindings pass gmsh's
+/// (builders/gmsh_builder.h: build_planar_polygons); the foams module sees no gmsh.
+using PolygonMesher = std::function<ClusterSpec(const std::vector<std::vector<Vec3>>& boundaries, double h)>;
+
+/// Each face's boundary for a PolygonMesher: its corners with its edges cut in between, the
+/// pieces graded from half a corner's shortest edge up to about h (edge_cuts.cpp), every edge
+/// cut alike for all its films and into at least 2 pieces.
+/// \throw InvalidInput when an edge would need more than 4096 pieces.
+std::vector<std::vector<Vec3>> graded_boundaries(const std::vector<VoronoiFace>& faces, const Eigen::Matrix3d& L,
+                                                 double h);
 
 /// The periodic cluster of the Voronoi foam of `sites` in the box L (columns: period
 /// vectors), films meshed with edges of about h: without a mesher by the split fans above
-/// (at most 4096 splits per fan triangle), with one by it, each Voronoi edge cut into
-/// ceil(length / h) pieces alike for all its films.
+/// (at most 4096 splits per fan triangle), with one by it from graded_boundaries.
 /// \throw InvalidInput for h not positive or too small for that, what periodic_voronoi and
-/// the mesher throw, GeometryError when the mesher's boundary points do not close up.
+/// the mesher throw, GeometryError when the mesher returns the wrong number of surfaces.
 FoamMesh voronoi_foam(const std::vector<Vec3>& sites, const Eigen::Matrix3d& L, double h,
                       const PolygonMesher& mesher = {});
 
