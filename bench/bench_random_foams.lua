@@ -3,32 +3,12 @@
 -- (minimize makes no T1s yet).
 --   froth bench/bench_random_foams.lua [n=16,64] [lloyd=0,5,20,50] [mesher=fan,gmsh] [h=0.4]
 -- Prints per foam: cells, mesher, Lloyd steps, vertices, the smallest facet corner angle of
--- the fresh mesh (degrees; edges across the box taken as their shortest image), minimize's
+-- the fresh mesh (degrees, c:report().mesh.min_angle), minimize's
 -- iterations and stop, and the cost (film area, each film counted for both its cells, over
 -- V^(2/3), V = 1) at the start and at the stop. CPU seconds (os.clock) leave out gmsh's child
 -- process: time one foam under /usr/bin/time -v for the build's wall time and memory.
 local opts = require("froth.script").options({n = "16,64", lloyd = "0,5,20,50", mesher = "fan,gmsh",
                                               h = 0.4}, arg)
-
-local function smallest_angle(c, side)
-  local X, worst = {}, 180
-  for _, v in ipairs(c:vertices()) do X[v.id] = v.x end
-  local function edge(a, b)
-    local e = {}
-    for i = 1, 3 do e[i] = b[i] - a[i] - side * math.floor((b[i] - a[i]) / side + 0.5) end
-    return e
-  end
-  for _, t in ipairs(c:facets()) do
-    for k = 1, 3 do
-      local a = X[t.vertices[k]]
-      local u, w = edge(a, X[t.vertices[k % 3 + 1]]), edge(a, X[t.vertices[(k + 1) % 3 + 1]])
-      local dot, nu, nw = 0, 0, 0
-      for i = 1, 3 do dot, nu, nw = dot + u[i] * w[i], nu + u[i] ^ 2, nw + w[i] ^ 2 end
-      worst = math.min(worst, math.deg(math.acos(math.min(1, dot / math.sqrt(nu * nw)))))
-    end
-  end
-  return worst
-end
 
 print("cells  mesher  lloyd  vertices  min_angle  build_cpu_s  iterations  minimize_s  stop            cost_0   cost")
 for n in tostring(opts.n):gmatch("[^,]+") do
@@ -38,7 +18,7 @@ for n in tostring(opts.n):gmatch("[^,]+") do
       local c = froth.foam{n = tonumber(n), seed = 1, h = tonumber(opts.h), lloyd = tonumber(lloyd), mesher = mesher}
       local build = os.clock() - t0
       local cost0 = 2 * c:energy() / tonumber(n)
-      local angle = smallest_angle(c, tonumber(n) ^ (1 / 3))
+      local angle = c:report().mesh.min_angle
       local r = c:minimize{max_iterations = 1000}
       local stop = r.converged and "converged" or r.stop_reason:match("^[%a_]+")
       print(("%5s  %-6s  %5s  %8d  %9.2f  %11.2f  %10d  %10.2f  %-14s  %.4f  %.4f"):format(n, mesher, lloyd,

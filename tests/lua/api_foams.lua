@@ -233,25 +233,7 @@ if froth.has("gmsh") then
   T.assert_near(g:area(), f:area(), 1e-10 * f:area(), "gmsh mesher: the films' area is the fans'")
   T.assert_equal(#g:triple_lines() * 1000 + #g:quadruple_points(), #f:triple_lines() * 1000 + #f:quadruple_points(),
                  "gmsh mesher: the same junctions")
-  local function smallest_angle(c) -- of the facet corners, edges taken across the box as the
-    local X, worst = {}, 180         -- shortest image (the facets are far smaller than it)
-    for _, v in ipairs(c:vertices()) do X[v.id] = v.x end
-    local function edge(a, b)
-      local e = {}
-      for i = 1, 3 do e[i] = b[i] - a[i] - side * math.floor((b[i] - a[i]) / side + 0.5) end
-      return e
-    end
-    for _, t in ipairs(c:facets()) do
-      for k = 1, 3 do
-        local a = X[t.vertices[k]]
-        local u, w = edge(a, X[t.vertices[k % 3 + 1]]), edge(a, X[t.vertices[(k + 1) % 3 + 1]])
-        local dot, nu, nw = 0, 0, 0
-        for i = 1, 3 do dot, nu, nw = dot + u[i] * w[i], nu + u[i] ^ 2, nw + w[i] ^ 2 end
-        worst = math.min(worst, math.deg(math.acos(math.min(1, dot / math.sqrt(nu * nw)))))
-      end
-    end
-    return worst
-  end
+  local function smallest_angle(c) return c:report().mesh.min_angle end
   -- the fans' needles fall below a degree at this diagram's short edges; graded cuts keep
   -- gmsh's triangles above 5 degrees there
   T.assert_true(smallest_angle(f) < 1, "the fans have needles", smallest_angle(f))
