@@ -177,6 +177,15 @@ do
   local fixed = froth.voronoi_cells{sites = {{0, 0, 0}, {1, 1, 1}}, period = {{2, 0, 0}, {0, 2, 0}, {0, 0, 2}},
                                     lloyd = 3}
   T.assert_near(fixed.sites[2][1], 1, 1e-12, "lloyd: the BCC lattice is a fixed point")
+  -- One site in a sheared box: its cell meets only its own images (a generic lattice's
+  -- 14 faces, 7 pairs), fills the box and, centrally symmetric, has its centroid at the site.
+  local sheared = {{1, 0, 0}, {0.3, 1, 0}, {0.1, 0.2, 1}}
+  local one = froth.voronoi_cells{sites = {{0.4, 0.5, 0.6}}, period = sheared}
+  T.assert_equal(one.faces, 7, "voronoi_cells: a lattice's cell has 14 faces, met by 7 images")
+  T.assert_near(one.volumes[1], 1, 1e-12, "voronoi_cells: a sheared box's one cell is the box")
+  for d, x in ipairs{0.4, 0.5, 0.6} do
+    T.assert_near(one.centroids[1][d], x, 1e-12, "voronoi_cells: a lattice cell's centroid is its site")
+  end
   -- Random sites: the cells fill the box, and relaxation moves sites towards their centroids
   -- and evens out the volumes (a centroidal Voronoi tessellation in the limit).
   local side, sites = 2, {}
