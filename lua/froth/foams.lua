@@ -60,8 +60,8 @@ function M.foam(opts)
   local h = positive(name, opts, "h", 0.25 * volume ^ (1 / 3))
   local equal = check.boolean(name, opts, "equal_volumes", true)
   local lloyd = number(name, opts, "lloyd", 0)
-  if math.type(lloyd) ~= "integer" or lloyd < 0 then
-    fail(name, "lloyd must be an integer >= 0, got %s", lloyd)
+  if math.type(lloyd) ~= "integer" or lloyd < 0 or lloyd > 10000 then
+    fail(name, "lloyd must be an integer >= 0 and at most 10000, got %s", lloyd)
   end
   local side = (n * volume) ^ (1 / 3)
   local rng = math.random

@@ -14,14 +14,18 @@ namespace {
 
 constexpr int kMaxSplits = 4096;
 
+Vec3 corner_mean(const std::vector<Vec3>& polygon) {
+    Vec3 sum = Vec3::Zero();
+    for (const Vec3& p : polygon) sum += p;
+    return sum / static_cast<double>(polygon.size());
+}
+
 /// The fan of a convex polygon from its centroid, each fan triangle (c, p_i, p_i+1) split
 /// into n^2 by the lattice c + (p_i - c) i/n + (p_i+1 - c) j/n, appended to spec as points
 /// and triangles (points repeat along shared lines; identify_periodic_images merges them).
 void add_split_fan(const std::vector<Vec3>& polygon, int n, ClusterSpec& spec,
                    ClusterSpec::Surface& surface) {
-    Vec3 center = Vec3::Zero();
-    for (const Vec3& p : polygon) center += p;
-    center /= static_cast<double>(polygon.size());
+    const Vec3 center = corner_mean(polygon);
     for (std::size_t k = 0; k < polygon.size(); ++k) {
         const Vec3 u = polygon[k] - center, w = polygon[(k + 1) % polygon.size()] - center;
         const int base = static_cast<int>(spec.vertices.size());
@@ -72,9 +76,7 @@ ClusterSpec mesh_faces(const std::vector<VoronoiFace>& faces, const Eigen::Matri
 double longest_fan_edge(const std::vector<VoronoiFace>& faces) {
     double longest = 0;
     for (const VoronoiFace& f : faces) {
-        Vec3 center = Vec3::Zero();
-        for (const Vec3& p : f.polygon) center += p;
-        center /= static_cast<double>(f.polygon.size());
+        const Vec3 center = corner_mean(f.polygon);
         for (std::size_t k = 0; k < f.polygon.size(); ++k)
             longest = std::max({longest, (f.polygon[k] - center).norm(),
                                 (f.polygon[(k + 1) % f.polygon.size()] - f.polygon[k]).norm()});

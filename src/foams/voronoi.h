@@ -40,7 +40,7 @@ VoronoiCells voronoi_cells(const std::vector<VoronoiFace>& faces, int n, const E
 /// `iterations` steps of Lloyd's algorithm on the periodic diagram: every site moves to its
 /// cell's centroid (towards a centroidal Voronoi tessellation, whose cells are rounder, more
 /// equal in volume and have fewer short edges and small faces). Throws what periodic_voronoi
-/// throws, and InvalidInput for a negative count.
+/// throws, InvalidInput for a negative count, Interrupted on Ctrl-C (polled between steps).
 std::vector<Vec3> lloyd_relax(std::vector<Vec3> sites, const Eigen::Matrix3d& L, int iterations);
 
 /// False when froth was built without CGAL.

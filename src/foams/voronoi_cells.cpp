@@ -3,6 +3,7 @@
 #include "foams/voronoi.h"
 
 #include "core/errors.h"
+#include "core/interrupt.h"
 
 #include <Eigen/Geometry>
 
@@ -59,8 +60,14 @@ VoronoiCells voronoi_cells(const std::vector<VoronoiFace>& faces, int n, const E
 std::vector<Vec3> lloyd_relax(std::vector<Vec3> sites, const Eigen::Matrix3d& L, int iterations) {
     if (iterations < 0)
         throw InvalidInput("foam: lloyd must be a count >= 0, got " + std::to_string(iterations));
-    for (int it = 0; it < iterations; ++it)
+    // thousands of steps on many sites take minutes: Ctrl-C ends them between steps
+    const EngineLoopScope loop;
+    for (int it = 0; it < iterations; ++it) {
+        if (consume_interrupt())
+            throw Interrupted("foam: interrupted (Ctrl-C) after " + std::to_string(it) + " of " +
+                              std::to_string(iterations) + " Lloyd steps; nothing was built");
         sites = voronoi_cells(periodic_voronoi(sites, L), static_cast<int>(sites.size()), L).centroids;
+    }
     return sites;
 }
 

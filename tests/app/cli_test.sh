@@ -110,6 +110,34 @@ LUA
     fi
 fi
 
+# Ctrl-C during Lloyd's relaxation (thousands of Voronoi diagrams) stops it between steps as a
+# Lua error naming how far it got, and the script goes on (needs CGAL).
+if "$FROTH" -e 'os.exit(froth.has("cgal") and 0 or 1)'; then
+    cat >"$TMP/lloyd.lua" <<'LUA'
+local sites = {}
+math.randomseed(2)
+for i = 1, 300 do sites[i] = {7 * math.random(), 7 * math.random(), 7 * math.random()} end
+print(pcall(froth.voronoi_cells, {sites = sites, period = {{7, 0, 0}, {0, 7, 0}, {0, 0, 7}}, lloyd = 10000}))
+print(#froth.voronoi_cells{sites = {{0, 0, 0}, {1, 1, 1}}, period = {{2, 0, 0}, {0, 2, 0}, {0, 0, 2}}}.volumes)
+LUA
+    "$FROTH" "$TMP/lloyd.lua" >"$TMP/out" 2>"$TMP/err" &
+    pid=$!
+    sleep 2
+    kill -INT "$pid"
+    start=$SECONDS
+    wait "$pid"
+    rc=$?
+    if [[ $rc != 0 ]] || (( SECONDS - start > 20 )) ||
+        ! grep -q 'foam: interrupted (Ctrl-C) after [0-9]* of 10000 Lloyd steps; nothing was built' "$TMP/out" ||
+        ! grep -q '^2$' "$TMP/out"; then
+        failed=$((failed + 1))
+        echo "FAIL Ctrl-C during Lloyd's relaxation: rc $rc"
+        sed 's/^/  stdout: /' "$TMP/out"
+    else
+        passed=$((passed + 1))
+    fi
+fi
+
 # Ctrl-C during an evolution stops it between steps, says where on stderr, and the script goes
 # on with stop_reason "interrupted" (no gmsh needed).
 cat >"$TMP/evolve.lua" <<'LUA'

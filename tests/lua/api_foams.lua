@@ -218,9 +218,8 @@ do
                 offset(raw) .. " -> " .. offset(relaxed))
   T.assert_true(spread(relaxed.volumes) < 0.5 * spread(raw.volumes), "lloyd: the volumes even out",
                 spread(raw.volumes) .. " -> " .. spread(relaxed.volumes))
-  local c = froth.foam{n = 8, seed = 3, h = 0.3, lloyd = 10, equal_volumes = false}
   T.assert_equal(#relaxed.sites * 100 + #relaxed.volumes, 808, "voronoi_cells: one site and volume per cell")
-  local v = c:volumes()
+  local v = froth.foam{n = 8, seed = 3, h = 0.3, lloyd = 10, equal_volumes = false}:volumes()
   local w = froth.foam{n = 8, seed = 3, h = 0.3, equal_volumes = false}:volumes()
   T.assert_true(spread(v) < spread(w), "foam{lloyd}: relaxed cells are more equal", spread(w) .. " -> " .. spread(v))
 end
@@ -314,6 +313,7 @@ T.check_error("take a larger h", froth.voronoi_foam,
 T.check_error("kelvin_foam: unknown option 'n'", froth.kelvin_foam, {n = 3})
 T.check_error("foam: n must be an integer >= 2", froth.foam, {n = 1})
 T.check_error("foam: lloyd must be an integer >= 0", froth.foam, {n = 4, lloyd = -1})
+T.check_error("foam: lloyd must be an integer >= 0 and at most 10000, got 20000", froth.foam, {n = 4, lloyd = 20000})
 T.check_error("voronoi_foam: option 'lloyd' must be a count of steps from 0 to 10000", froth.voronoi_foam,
               {sites = {{0, 0, 0}, {0.5, 0.5, 0.5}}, period = unit, h = 0.3, lloyd = -2})
 T.check_error("voronoi_cells: option 'period' is required", froth.voronoi_cells, {sites = {{0, 0, 0}}})
