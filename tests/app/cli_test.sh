@@ -83,6 +83,19 @@ check "-l module" 0 '^aa$' '' -- "$FROTH" -l string -e 'print(string.rep("a", 2)
 check "no banner without a terminal" 0 '^42$' '' -- "$FROTH" "$TMP/chunk.lua"
 [[ $(grep -c . "$TMP/out") == 1 ]] || { failed=$((failed + 1)); echo "FAIL banner printed"; }
 
+# Runs froth on a script in the background, sends it SIGINT after 2 s and waits: stdout and
+# stderr in $TMP/out and $TMP/err, the exit code in rc, the seconds the script took to end after
+# the interrupt from $start.
+interrupt_after_2s() {
+    "$FROTH" "$1" >"$TMP/out" 2>"$TMP/err" &
+    local pid=$!
+    sleep 2
+    kill -INT "$pid"
+    start=$SECONDS
+    wait "$pid"
+    rc=$?
+}
+
 # Ctrl-C during gmsh meshing is served at once (the mesh runs in a child process that is
 # killed), the script goes on, and no meshing process is left behind. The mesh asked for takes
 # about 90 s on one core; the check allows 20 s from the interrupt.
@@ -92,13 +105,7 @@ local ok, err = pcall(froth.double_bubble, {h = 0.006})
 print(ok, err)
 print(froth.double_bubble{h = 0.3}:info().bodies)
 LUA
-    "$FROTH" "$TMP/mesh.lua" >"$TMP/out" 2>"$TMP/err" &
-    pid=$!
-    sleep 2
-    kill -INT "$pid"
-    start=$SECONDS
-    wait "$pid"
-    rc=$?
+    interrupt_after_2s "$TMP/mesh.lua"
     if [[ $rc != 0 ]] || (( SECONDS - start > 20 )) ||
         ! grep -q 'double_bubble: interrupted (Ctrl-C) while gmsh was meshing; nothing was built' "$TMP/out" ||
         ! grep -q '^2$' "$TMP/out" || pgrep -f "$TMP/mesh.lua" >/dev/null; then
@@ -120,13 +127,7 @@ for i = 1, 300 do sites[i] = {7 * math.random(), 7 * math.random(), 7 * math.ran
 print(pcall(froth.voronoi_cells, {sites = sites, period = {{7, 0, 0}, {0, 7, 0}, {0, 0, 7}}, lloyd = 10000}))
 print(#froth.voronoi_cells{sites = {{0, 0, 0}, {1, 1, 1}}, period = {{2, 0, 0}, {0, 2, 0}, {0, 0, 2}}}.volumes)
 LUA
-    "$FROTH" "$TMP/lloyd.lua" >"$TMP/out" 2>"$TMP/err" &
-    pid=$!
-    sleep 2
-    kill -INT "$pid"
-    start=$SECONDS
-    wait "$pid"
-    rc=$?
+    interrupt_after_2s "$TMP/lloyd.lua"
     if [[ $rc != 0 ]] || (( SECONDS - start > 20 )) ||
         ! grep -q 'foam: interrupted (Ctrl-C) after [0-9]* of 10000 Lloyd steps; nothing was built' "$TMP/out" ||
         ! grep -q '^2$' "$TMP/out"; then
@@ -146,12 +147,7 @@ c:refine(); c:refine(); c:refine()
 local r = c:evolve{flow = "sd", tau = 1e-4, steps = 1000000}
 print(r.stop_reason, r.steps > 0, r.t == c:time())
 LUA
-"$FROTH" "$TMP/evolve.lua" >"$TMP/out" 2>"$TMP/err" &
-pid=$!
-sleep 2
-kill -INT "$pid"
-wait "$pid"
-rc=$?
+interrupt_after_2s "$TMP/evolve.lua"
 if [[ $rc != 0 ]] || ! grep -q '^interrupted	true	true$' "$TMP/out" ||
     ! grep -q '^evolve: interrupted (Ctrl-C) at step [1-9][0-9]*, t = .*; the cluster keeps the state of that step$' "$TMP/err"; then
     failed=$((failed + 1))
