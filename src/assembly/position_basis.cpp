@@ -55,6 +55,19 @@ Eigen::VectorXd PositionBasis::restrict(const Eigen::VectorXd& g) const {
     return y;
 }
 
+Eigen::SparseMatrix<double> PositionBasis::restrict(const Eigen::SparseMatrix<double>& G) const {
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(3 * size());
+    const int n = static_cast<int>(offset_.size()) - 1;
+    for (int v = 0; v < n; ++v)
+        for (int r = 0; r < dim(v); ++r)
+            for (int d = 0; d < 3; ++d)
+                if (T(v)(d, r) != 0) entries.emplace_back(offset_[v] + r, 3 * v + d, T(v)(d, r));
+    Eigen::SparseMatrix<double> Tt(size(), 3 * n);
+    Tt.setFromTriplets(entries.begin(), entries.end());
+    return Tt * G;
+}
+
 Eigen::Vector3d PositionBasis::displacement(const Eigen::VectorXd& y, int v) const {
     if (!constrained_[v]) return y.segment<3>(offset_[v]);
     return T_[v].leftCols(dim(v)) * y.segment(offset_[v], dim(v));

@@ -9,6 +9,7 @@
 #include "mesh/cluster.h"
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <vector>
 
@@ -34,6 +35,8 @@ class PositionBasis {
     void add_column_pair(SparseBuilder& M, int v, int col, const Eigen::Vector3d& u) const;
     /// T^T g for a full-coordinate vector g (3 per vertex).
     Eigen::VectorXd restrict(const Eigen::VectorXd& g) const;
+    /// T^T G for a sparse full-coordinate matrix G (3 rows per vertex), column by column.
+    Eigen::SparseMatrix<double> restrict(const Eigen::SparseMatrix<double>& G) const;
     /// d projected onto the directions vertex v may move in, T_v T_v^T d.
     Eigen::Vector3d project_tangent(int v, const Eigen::Vector3d& d) const {
         if (!constrained_[v]) return d;

@@ -26,7 +26,7 @@ using Clock = std::chrono::steady_clock;
 struct Variation {
     Eigen::VectorXd grad_energy;      ///< T^T grad E, its component normal to the films
     Eigen::VectorXd grad_energy_full; ///< T^T grad E
-    Eigen::MatrixXd grad_volume; ///< T^T G, one column per body
+    Eigen::SparseMatrix<double> grad_volume; ///< T^T G, one column per body
     Eigen::VectorXd weight;      ///< 1 / m_v on the rows of vertex v
     double area = 0, energy = 0;
     int bodies = 0; ///< all bodies (grad_volume may leave out the last: Cluster::fills_box)
@@ -60,11 +60,10 @@ Variation first_variation(const Cluster& c, const PositionBasis& P, const PairGe
     d.grad_energy_full = P.restrict(apply_stiffness(c, c.positions()));
     d.grad_energy = d.grad_energy_full;
     project_normal(c, P, g, d.grad_energy);
-    const Eigen::MatrixXd G = body_volume_gradients(c);
     // Cells that fill a periodic box: the last volume is the box's less the others (its
     // gradient is minus their sum), so it is no constraint of its own and gets pressure 0.
-    d.grad_volume.resize(P.size(), c.n_volume_constraints());
-    for (int b = 0; b < c.n_volume_constraints(); ++b) d.grad_volume.col(b) = P.restrict(G.col(b));
+    d.grad_volume = P.restrict(sparse_body_volume_gradients(c, c.positions()))
+                        .leftCols(c.n_volume_constraints());
     d.bodies = c.n_bodies();
     d.weight.resize(P.size());
     for (int v = 0; v < c.n_vertices(); ++v) {
@@ -79,8 +78,9 @@ Variation first_variation(const Cluster& c, const PositionBasis& P, const PairGe
 
 EquilibriumState balance(const Variation& d) {
     EquilibriumState s;
-    const Eigen::MatrixXd WB = d.weight.asDiagonal() * d.grad_volume;
-    const Eigen::VectorXd p = (d.grad_volume.transpose() * WB).ldlt().solve(WB.transpose() * d.grad_energy);
+    const Eigen::SparseMatrix<double> WB = d.weight.asDiagonal() * d.grad_volume;
+    const Eigen::MatrixXd BWB(d.grad_volume.transpose() * WB); // n_bodies^2, sparse in a foam
+    const Eigen::VectorXd p = BWB.ldlt().solve(WB.transpose() * d.grad_energy);
     const Eigen::VectorXd r = d.grad_energy - d.grad_volume * p;
     s.pressures.assign(p.data(), p.data() + p.size());
     s.pressures.resize(d.bodies, 0.0); // the gauge of a box filled with cells
@@ -154,21 +154,27 @@ class StepSystem {
 };
 
 /// The step of minimize.h from the first variation d: K y = -T^T grad E + B p, B^T y = dV with
-/// B = T^T G, by the Schur complement (B^T K^-1 B) p = dV + B^T K^-1 T^T grad E.
+/// B = T^T G, by the Schur complement (B^T K^-1 B) p = dV + B^T K^-1 T^T grad E, then
+/// y = K^-1 (-T^T grad E + B p). K^-1 B is dense (3 n_vertices x n_bodies), so it is made
+/// kSchurBlock columns at a time and only B^T K^-1 B (n_bodies^2) is kept: a 1000-cell foam
+/// of 10^5 vertices needs megabytes here, not the gigabytes of K^-1 B whole.
 Eigen::VectorXd constrained_step(StepSystem& K, bool fresh, const Variation& d,
                                  const Eigen::VectorXd& dV, Eigen::VectorXd& p) {
+    constexpr Eigen::Index kSchurBlock = 64;
     const Eigen::Index nb = d.grad_volume.cols();
-    Eigen::MatrixXd rhs(d.grad_energy_full.size(), nb + 1);
-    rhs.col(0) = -d.grad_energy_full;
-    rhs.rightCols(nb) = d.grad_volume;
-    const Eigen::MatrixXd U = K.solve(rhs, fresh);
+    const Eigen::VectorXd u = K.solve(-d.grad_energy_full, fresh);
     if (nb == 0) {
         p.resize(0);
-        return U.col(0);
+        return u;
     }
-    const Eigen::MatrixXd BU = d.grad_volume.transpose() * U.rightCols(nb);
-    p = BU.partialPivLu().solve(dV - d.grad_volume.transpose() * U.col(0));
-    return U.col(0) + U.rightCols(nb) * p;
+    Eigen::MatrixXd S(nb, nb);
+    for (Eigen::Index j = 0; j < nb; j += kSchurBlock) {
+        const Eigen::Index k = std::min(kSchurBlock, nb - j);
+        const Eigen::MatrixXd B(d.grad_volume.middleCols(j, k));
+        S.middleCols(j, k) = d.grad_volume.transpose() * K.solve(B, false);
+    }
+    p = S.partialPivLu().solve(dV - d.grad_volume.transpose() * u);
+    return u + K.solve(Eigen::VectorXd(d.grad_volume * p), false);
 }
 
 Eigen::VectorXd flatten(const std::vector<Vec3>& X) {
@@ -331,11 +337,11 @@ class Minimizer {
             Eigen::VectorXd dV(nb);
             for (int b = 0; b < nb; ++b) dV[b] = c_.target_volumes()[b] - V[b];
             if (max_target_deviation(c_, V) <= 1e-15) return;
-            const Eigen::MatrixXd G = body_volume_gradients(c_, X);
-            Eigen::MatrixXd B(P.size(), nb);
-            for (int b = 0; b < nb; ++b) B.col(b) = P.restrict(G.col(b));
-            const Eigen::MatrixXd WB = d.weight.asDiagonal() * B;
-            const Eigen::VectorXd y = WB * (B.transpose() * WB).partialPivLu().solve(dV);
+            const Eigen::SparseMatrix<double> B =
+                P.restrict(sparse_body_volume_gradients(c_, X)).leftCols(nb);
+            const Eigen::SparseMatrix<double> WB = d.weight.asDiagonal() * B;
+            const Eigen::MatrixXd BWB(B.transpose() * WB);
+            const Eigen::VectorXd y = WB * BWB.partialPivLu().solve(dV);
             for (int v = 0; v < c_.n_vertices(); ++v) X[v] += P.displacement(y, v);
         }
     }

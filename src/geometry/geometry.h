@@ -55,6 +55,10 @@ double max_target_deviation(const Cluster& c, const std::vector<double>& volumes
 Eigen::MatrixXd body_volume_gradients(const Cluster& c);
 /// The same at positions X (one per vertex) instead of the cluster's own.
 Eigen::MatrixXd body_volume_gradients(const Cluster& c, const std::vector<Vec3>& X);
+/// The same as a sparse matrix (a body's column is nonzero at its films' vertices only): what
+/// foams of many cells need.
+Eigen::SparseMatrix<double> sparse_body_volume_gradients(const Cluster& c,
+                                                         const std::vector<Vec3>& X);
 
 /// Per (surface, vertex) pair (Cluster::pair_*): lumped mass m_iv = 1/3 sum |sigma| and the
 /// area-weighted normal omega_iv = sum |sigma| nu_sigma / sum |sigma| (not normalised).

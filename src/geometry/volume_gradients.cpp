@@ -37,41 +37,74 @@ Vec3 lid_gradient(const Cluster& c, const Body& b, std::vector<Vec3>& X, int v, 
     return g;
 }
 
+/// Adds d V_b / d X of body bi at X to add(v, g) vertex by vertex (a vertex may come more
+/// than once). Y is a scratch copy of X for the lids' differences (filled on first use).
+template <class Add>
+void add_body_gradient(const Cluster& c, const std::vector<Vec3>& X, int bi,
+                       std::vector<Vec3>& Y, Add&& add) {
+    const Body& b = c.bodies()[bi];
+    const std::vector<int> rim = rim_vertices(b);
+    const auto on_rim = [&](int v) { return std::binary_search(rim.begin(), rim.end(), v); };
+    for (const BodyFace& f : b.faces)
+        for (std::size_t j = 0; j < c.surface(f.surface).triangles.size(); ++j) {
+            const Tri& t = c.surface(f.surface).triangles[j];
+            const Vec3 a2 = f.sign * area_vector2(c.surface(f.surface).corners(X, j)) / 6.0;
+            for (int k = 0; k < 3; ++k) {
+                const int v = t[k];
+                // The cone's gradient X_b x X_c / 6 differs from a2 / 6 by terms that
+                // cancel around a closed fan; a rim fan is closed by the lid instead.
+                add(v, on_rim(v) ? Vec3(f.sign * X[t[(k + 1) % 3]].cross(X[t[(k + 2) % 3]]) / 6.0)
+                                 : a2);
+            }
+        }
+    if (rim.empty()) return;
+    double size = 0;
+    for (int v : rim) size = std::max(size, (X[v] - X[rim[0]]).norm());
+    const double step = 1e-4 * std::max(size, 1e-300);
+    if (Y.empty()) Y = X;
+    for (int v : rim) add(v, lid_gradient(c, b, Y, v, step));
+}
+
 } // namespace
 
 Eigen::MatrixXd body_volume_gradients(const Cluster& c) {
     return body_volume_gradients(c, c.positions());
 }
 
-// Dense: a column per body, and clusters have few bodies (3 n_vertices x n_bodies doubles);
+// Dense: a column per body, for clusters of few bodies (3 n_vertices x n_bodies doubles);
 // accumulating in place costs a tenth of building triplets and compressing them.
 Eigen::MatrixXd body_volume_gradients(const Cluster& c, const std::vector<Vec3>& X) {
     Eigen::MatrixXd G = Eigen::MatrixXd::Zero(3 * c.n_vertices(), c.n_bodies());
-    std::vector<Vec3> Y; // a copy of X for the lids' differences
+    std::vector<Vec3> Y;
+    for (int bi = 0; bi < c.n_bodies(); ++bi)
+        add_body_gradient(c, X, bi, Y, [&](int v, const Vec3& g) {
+            G.col(bi).segment<3>(3 * v) += g;
+        });
+    return G;
+}
+
+// Sparse: a body's column is nonzero only at the vertices of its films, so a foam of n cells
+// stores O(n_vertices) numbers instead of O(n_vertices n). Each column is summed in a dense
+// scratch vector and copied out at the vertices it touched.
+Eigen::SparseMatrix<double> sparse_body_volume_gradients(const Cluster& c,
+                                                         const std::vector<Vec3>& X) {
+    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<Vec3> Y, sum(c.n_vertices(), Vec3::Zero());
+    std::vector<char> seen(c.n_vertices(), 0);
+    std::vector<int> touched;
     for (int bi = 0; bi < c.n_bodies(); ++bi) {
-        const Body& b = c.bodies()[bi];
-        const std::vector<int> rim = rim_vertices(b);
-        const auto on_rim = [&](int v) { return std::binary_search(rim.begin(), rim.end(), v); };
-        for (const BodyFace& f : b.faces)
-            for (std::size_t j = 0; j < c.surface(f.surface).triangles.size(); ++j) {
-                const Tri& t = c.surface(f.surface).triangles[j];
-                const Vec3 a2 = f.sign * area_vector2(c.surface(f.surface).corners(X, j)) / 6.0;
-                for (int k = 0; k < 3; ++k) {
-                    const int v = t[k];
-                    // The cone's gradient X_b x X_c / 6 differs from a2 / 6 by terms that
-                    // cancel around a closed fan; a rim fan is closed by the lid instead.
-                    G.col(bi).segment<3>(3 * v) +=
-                        on_rim(v) ? Vec3(f.sign * X[t[(k + 1) % 3]].cross(X[t[(k + 2) % 3]]) / 6.0)
-                                  : a2;
-                }
-            }
-        if (rim.empty()) continue;
-        double size = 0;
-        for (int v : rim) size = std::max(size, (X[v] - X[rim[0]]).norm());
-        const double step = 1e-4 * std::max(size, 1e-300);
-        if (Y.empty()) Y = X;
-        for (int v : rim) G.col(bi).segment<3>(3 * v) += lid_gradient(c, b, Y, v, step);
+        add_body_gradient(c, X, bi, Y, [&](int v, const Vec3& g) {
+            if (!seen[v]) seen[v] = 1, touched.push_back(v);
+            sum[v] += g;
+        });
+        for (int v : touched) {
+            for (int d = 0; d < 3; ++d) entries.emplace_back(3 * v + d, bi, sum[v][d]);
+            sum[v].setZero(), seen[v] = 0;
+        }
+        touched.clear();
     }
+    Eigen::SparseMatrix<double> G(3 * c.n_vertices(), c.n_bodies());
+    G.setFromTriplets(entries.begin(), entries.end());
     return G;
 }
 
