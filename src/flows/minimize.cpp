@@ -8,6 +8,7 @@
 #include "core/interrupt.h"
 #include "schemes/mean_curvature.h"
 #include "solvers/anderson.h"
+#include "solvers/schur_complement.h"
 #include "solvers/sparse_solvers.h"
 
 #include <Eigen/Dense>
@@ -154,27 +155,16 @@ class StepSystem {
 };
 
 /// The step of minimize.h from the first variation d: K y = -T^T grad E + B p, B^T y = dV with
-/// B = T^T G, by the Schur complement (B^T K^-1 B) p = dV + B^T K^-1 T^T grad E, then
-/// y = K^-1 (-T^T grad E + B p). K^-1 B is dense (3 n_vertices x n_bodies), so it is made
-/// kSchurBlock columns at a time and only B^T K^-1 B (n_bodies^2) is kept: a 1000-cell foam
-/// of 10^5 vertices needs megabytes here, not the gigabytes of K^-1 B whole.
+/// B = T^T G, by the Schur complement (solvers/schur_complement.h); K is factorised (fresh)
+/// in the first solve only.
 Eigen::VectorXd constrained_step(StepSystem& K, bool fresh, const Variation& d,
                                  const Eigen::VectorXd& dV, Eigen::VectorXd& p) {
-    constexpr Eigen::Index kSchurBlock = 64;
-    const Eigen::Index nb = d.grad_volume.cols();
-    const Eigen::VectorXd u = K.solve(-d.grad_energy_full, fresh);
-    if (nb == 0) {
-        p.resize(0);
-        return u;
-    }
-    Eigen::MatrixXd S(nb, nb);
-    for (Eigen::Index j = 0; j < nb; j += kSchurBlock) {
-        const Eigen::Index k = std::min(kSchurBlock, nb - j);
-        const Eigen::MatrixXd B(d.grad_volume.middleCols(j, k));
-        S.middleCols(j, k) = d.grad_volume.transpose() * K.solve(B, false);
-    }
-    p = S.partialPivLu().solve(dV - d.grad_volume.transpose() * u);
-    return u + K.solve(Eigen::VectorXd(d.grad_volume * p), false);
+    const auto solve = [&](const Eigen::MatrixXd& R) {
+        const Eigen::MatrixXd U = K.solve(R, fresh);
+        fresh = false;
+        return U;
+    };
+    return schur_complement_solve(solve, d.grad_volume, -d.grad_energy_full, dV, p);
 }
 
 Eigen::VectorXd flatten(const std::vector<Vec3>& X) {

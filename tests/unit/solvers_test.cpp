@@ -1,6 +1,7 @@
 // SparseDirectSolver: lagged factorisations must give the answers of fresh ones, and failures
 // must be SolverErrors, for both the Cholesky and the LU path.
 #include "core/errors.h"
+#include "solvers/schur_complement.h"
 #include "solvers/sparse_solvers.h"
 
 #include <Eigen/Dense>
@@ -179,6 +180,48 @@ TEST(Solvers, BlocksGiveWayToTheLu) {
     EXPECT_FALSE(s.blocks);
     EXPECT_LT((x - Eigen::MatrixXd(K).fullPivLu().solve(b)).norm() / x.norm(), 1e-11);
     EXPECT_THROW(parse_saddle_solver("cg"), InvalidInput);
+}
+
+// The blocked Schur complement (schur_complement.h) solves [K -B; B^T 0] as a dense LU does,
+// whether the m = 7 constraint columns come in one block, in blocks of 3 (the last one short)
+// or one by one; K is factorised once, in the first solve, and reused for the rest.
+TEST(Solvers, SchurComplementInBlocksMatchesTheDenseSaddlePoint) {
+    const int n = 40, m = 7;
+    const SparseMatrix K = shifted_laplacian(n, 0.3, 0.2);
+    std::vector<Eigen::Triplet<double>> t; // each column a few rows, like a cell's films
+    for (int j = 0; j < m; ++j)
+        for (int i = 5 * j; i < 5 * j + 8; ++i) t.emplace_back(i, j, std::cos(i + 3.0 * j));
+    Eigen::SparseMatrix<double> B(n, m);
+    B.setFromTriplets(t.begin(), t.end());
+    const Eigen::VectorXd f = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+    const Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(m, 0.5, -0.5);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
+    A.topLeftCorner(n, n) = Eigen::MatrixXd(K);
+    A.topRightCorner(n, m) = -Eigen::MatrixXd(B);
+    A.bottomLeftCorner(m, n) = Eigen::MatrixXd(B).transpose();
+    Eigen::VectorXd rhs(n + m);
+    rhs << f, g;
+    const Eigen::VectorXd exact = A.fullPivLu().solve(rhs);
+    for (Eigen::Index block : {64, 3, 1}) {
+        SparseDirectSolver solver(Factorization::Cholesky);
+        int solves = 0;
+        const auto solve = [&](const Eigen::MatrixXd& R) {
+            return solves++ == 0 ? solver.solve_fresh(K, R) : solver.solve_with_last_factor(R);
+        };
+        Eigen::VectorXd p;
+        const Eigen::VectorXd y = schur_complement_solve(solve, B, f, g, p, block);
+        EXPECT_LT((y - exact.head(n)).norm(), 1e-12 * exact.norm()) << "block " << block;
+        EXPECT_LT((p - exact.tail(m)).norm(), 1e-12 * exact.norm()) << "block " << block;
+        EXPECT_LT((Eigen::MatrixXd(B).transpose() * y - g).norm(), 1e-13) << "block " << block;
+        EXPECT_EQ(solves, 2 + (m + block - 1) / block) << "block " << block;
+    }
+    Eigen::VectorXd p; // no constraints: y = K^-1 f
+    SparseDirectSolver solver(Factorization::Cholesky);
+    const Eigen::VectorXd y = schur_complement_solve(
+        [&](const Eigen::MatrixXd& R) { return solver.solve_fresh(K, R); },
+        Eigen::SparseMatrix<double>(n, 0), f, g.head(0), p);
+    EXPECT_EQ(p.size(), 0);
+    EXPECT_LT((y - Eigen::MatrixXd(K).llt().solve(f)).norm(), 1e-12 * y.norm());
 }
 
 } // namespace
