@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <map>
-#include <optional>
 #include <set>
 
 namespace froth {
@@ -48,13 +47,13 @@ struct Candidate {
 class Collapser {
   public:
     Collapser(const Cluster& c, double min_length) : c_(c), min_length_(min_length) {}
-    /// One pass over `candidates` (shortest first); the edges collapsed, in the spec.
-    std::vector<Candidate> pass(const std::vector<Candidate>& candidates);
+    /// One pass; the number of edges collapsed (0: the spec is not needed).
+    int pass();
     ClusterSpec& spec() { return spec_; }
     const std::vector<Vec3>& positions() const { return X_; }
-    std::vector<Candidate> short_edges() const;
 
   private:
+    std::vector<Candidate> short_edges() const;
     bool collapse(const Candidate& e);
     bool link_condition(int a, int b) const;
 
@@ -156,10 +155,9 @@ bool Collapser::collapse(const Candidate& e) {
     return true;
 }
 
-std::vector<Candidate> Collapser::pass(const std::vector<Candidate>& candidates) {
+int Collapser::pass() {
     spec_ = cluster_spec(c_);
     X_ = c_.positions();
-    junction_.clear(), removed_facets_.clear();
     rank_ = vertex_ranks(c_);
     neighbours_.assign(c_.n_vertices(), {});
     facets_at_.assign(c_.n_vertices(), {});
@@ -178,9 +176,9 @@ std::vector<Candidate> Collapser::pass(const std::vector<Candidate>& candidates)
     for (const TripleLine& line : c_.triple_lines())
         if (line.closed && line.vertices.size() <= 3)
             for (int v : line.vertices) rank_[v] = -1;
-    std::vector<Candidate> made;
-    for (const Candidate& e : candidates)
-        if (collapse(e)) made.push_back(e);
+    int made = 0;
+    for (const Candidate& e : short_edges()) made += collapse(e);
+    if (!made) return 0;
     std::sort(removed_facets_.begin(), removed_facets_.end());
     for (auto it = removed_facets_.rbegin(); it != removed_facets_.rend(); ++it) {
         auto& s = spec_.surfaces[(*it)[0]];
@@ -190,45 +188,18 @@ std::vector<Candidate> Collapser::pass(const std::vector<Candidate>& candidates)
     return made;
 }
 
-/// The cluster after collapsing `candidates` (those of them that pass the local checks), or
-/// nothing if none does or the result is not a valid cluster.
-std::optional<Cluster> collapsed(const Cluster& c, Collapser& collapser,
-                                 const std::vector<Candidate>& candidates, int& count) {
-    count = static_cast<int>(collapser.pass(candidates).size());
-    if (count == 0) return std::nullopt;
-    ClusterSpec& spec = collapser.spec();
-    const std::vector<int> used = surgery::keep_used_vertices(spec, collapser.positions());
-    surgery::copy_vertex_lists(c, [&](int v) { return used[v]; }, spec);
-    try {
-        return surgery::rebuild(std::move(spec), "collapse_short_edges", "the collapses");
-    } catch (const TopologyError&) {
-        return std::nullopt;
-    }
-}
-
 } // namespace
 
-// The local checks miss some collapses that change the topology away from the edge (seen on
-// random foams: a body left open across an edge two films away). Such a pass is redone with
-// the collapses that make a valid cluster each on its own; they touch disjoint neighbourhoods,
-// and if together they still do not, nothing collapses.
 EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length) {
     EdgeCollapseResult r;
     Collapser collapser(c, min_length);
-    const std::vector<Candidate> made = collapser.pass(collapser.short_edges());
-    r.cluster = collapsed(c, collapser, made, r.collapsed);
-    if (!r.cluster && r.collapsed > 1) {
-        std::vector<Candidate> valid;
-        for (const Candidate& e : made) {
-            int one = 0;
-            if (collapsed(c, collapser, {e}, one)) valid.push_back(e);
-        }
-        r.cluster = collapsed(c, collapser, valid, r.collapsed);
-    }
-    if (!r.cluster) {
-        r.collapsed = 0;
-        return r;
-    }
+    r.collapsed = collapser.pass();
+    if (r.collapsed == 0) return r;
+    ClusterSpec& spec = collapser.spec();
+    const std::vector<int> used = surgery::keep_used_vertices(spec, collapser.positions());
+    surgery::copy_vertex_lists(c, [&](int v) { return used[v]; }, spec);
+    r.cluster.emplace(surgery::rebuild(std::move(spec), "collapse_short_edges",
+                                       "the collapses"));
     carry_over(c, *r.cluster);
     return r;
 }

@@ -209,7 +209,7 @@ class CellWalker {
             out.facets.push_back(f);
             for (int j = 0; j < 3; ++j) {
                 CellFacet g{};
-                if (!out.error.empty() || !next_across(name, f, j, g, out.error)) break;
+                if (!out.error.empty() || !next_across(name, times, f, j, g, out.error)) break;
                 if (times[g.surface] == 0) {
                     out.error = "cluster: " + name + " is not closed: across " + edge(f, j) +
                                 " its region is bounded by surface " + std::to_string(g.surface + 1) +
@@ -266,10 +266,13 @@ class CellWalker {
                " of surface " + std::to_string(f.surface + 1);
     }
 
-    /// The facet of the cell across side j of f: of all facets at that edge, the one the
-    /// cell's interior reaches first turning about the edge from f (the wedge rule).
-    bool next_across(const std::string& name, const CellFacet& f, int j, CellFacet& next,
-                     std::string& error) const {
+    /// The facet of the cell across side j of f: the only other facet at that edge on a
+    /// surface the body names, if there is one; else, of all facets at the edge, the one the
+    /// cell's interior reaches first turning about the edge from f (the wedge rule). The first
+    /// rule does not depend on the positions, so a state whose films a step has crossed near a
+    /// line (the wedges out of order) still has its cells.
+    bool next_across(const std::string& name, const std::vector<int>& times, const CellFacet& f,
+                     int j, CellFacet& next, std::string& error) const {
         const Tri& t = surfaces_[f.surface].triangles[f.facet];
         const Offset* k = surfaces_[f.surface].offsets[f.facet].data();
         const int a = t[j], b = t[(j + 1) % 3];
@@ -282,6 +285,8 @@ class CellWalker {
         };
         const Vec3 u = across(p[(j + 2) % 3]);
         double best = INFINITY;
+        int named = 0;
+        CellFacet only_named{};
         const auto range = std::equal_range(
             sides_.begin(), sides_.end(), FacetSide{std::min(a, b), std::max(a, b), 0, 0, 0},
             [](const FacetSide& x, const FacetSide& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });
@@ -299,11 +304,13 @@ class CellWalker {
             double angle = std::atan2(w.dot(inward), w.dot(u));
             if (angle <= 0) angle += 2 * std::numbers::pi;
             if (angle < best) best = angle, next = g;
+            if (times[g.surface] > 0) ++named, only_named = g;
         }
         if (best == INFINITY) {
             error = "cluster: " + name + " is not closed: " + edge(f, j) + " is in no other facet";
             return false;
         }
+        if (named == 1) next = only_named;
         return true;
     }
 
