@@ -8,7 +8,7 @@
 // business. The two (or three, along a triple line) facets at the edge go; the others at the
 // removed vertex take the kept one. The link condition (the ends' common neighbours are
 // exactly the corners opposite the edge) keeps every film a manifold, and a collapse that
-// would turn a facet over is not made. Collapses of one pass touch disjoint neighbourhoods,
+// would turn a facet over or take a film's last facet is not made. Collapses of one pass touch disjoint neighbourhoods,
 // so each is checked against the geometry before the pass.
 #include "mesh/transitions.h"
 
@@ -67,6 +67,7 @@ class Collapser {
     std::set<std::pair<int, int>> junction_;                  // junction edges (a < b)
     std::vector<char> touched_;
     std::vector<std::array<int, 2>> removed_facets_;          // (surface, facet) to drop
+    std::vector<int> facets_left_;                            // per surface, after the drops
 };
 
 std::vector<Candidate> Collapser::short_edges() const {
@@ -140,6 +141,10 @@ bool Collapser::collapse(const Candidate& e) {
             if (!surgery::keeps_its_side(before, y)) return false;
             if (v == gone) changes.push_back({si, f, k});
         }
+    // a film of one facet along the edge would vanish: that is a change of topology
+    for (const auto& [si, f] : dropped)
+        if (facets_left_[si] <= 1) return false;
+    for (const auto& [si, f] : dropped) --facets_left_[si];
     for (const Change& ch : changes) {
         spec_.surfaces[ch.surface].triangles[ch.facet][ch.corner] = keep;
         if (!spec_.surfaces[ch.surface].offsets.empty())
@@ -162,7 +167,9 @@ int Collapser::pass() {
     neighbours_.assign(c_.n_vertices(), {});
     facets_at_.assign(c_.n_vertices(), {});
     touched_.assign(c_.n_vertices(), 0);
+    facets_left_.assign(c_.n_surfaces(), 0);
     for (int si = 0; si < c_.n_surfaces(); ++si) {
+        facets_left_[si] = static_cast<int>(c_.surface(si).triangles.size());
         const auto& tris = c_.surface(si).triangles;
         for (int f = 0; f < static_cast<int>(tris.size()); ++f)
             for (int k = 0; k < 3; ++k) {
