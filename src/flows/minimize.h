@@ -10,7 +10,7 @@
 ///   [ T^T (A_gamma + 1/tau sum_i m_iv omega_iv omega_iv^T) T    T^T G ] [ y ]   [ -T^T A_gamma X^m ]
 ///   [ G^T T                                                      0    ] [ -p] = [ V* - V(X^m)      ]
 ///
-/// X^{m+1} = X^m + T y, G = dV/dX at X^m (geometry.h body_volume_gradients), and tau growing
+/// X^{m+1} = X^m + T y, G = dV/dX at X^m (geometry.h, stored sparse), and tau growing
 /// without bound from step to step (the tau -> infinity limit is the Dirichlet problem on
 /// Gamma^m of Pinkall and Polthier). Testing the first row with y gives, for V(X^m) = V*,
 /// E(X^{m+1}) <= E(X^m) for every tau (the seed's Theorem 3.2 proof; the constraint adds

@@ -8,8 +8,8 @@
 // business. The two (or three, along a triple line) facets at the edge go; the others at the
 // removed vertex take the kept one. The link condition (the ends' common neighbours are
 // exactly the corners opposite the edge) keeps every film a manifold, and a collapse that
-// would turn a facet over or take a film's last facet is not made. Collapses of one pass touch disjoint neighbourhoods,
-// so each is checked against the geometry before the pass.
+// would turn a facet over or take a film's last facet is not made. Collapses of one pass
+// touch disjoint neighbourhoods, so each is checked against the geometry before the pass.
 #include "mesh/transitions.h"
 
 #include "core/errors.h"
