@@ -233,12 +233,13 @@ T.assert_true(kc.collapsed > 0, "Kelvin: edges collapse across the box too")
 T.assert_near(sum, 2, 1e-12, "Kelvin: the cells fill the box after the collapses")
 T.assert_equal(#kf:triple_lines() * 100 + #kf:quadruple_points(), lines_k * 100 + quads_k,
                "Kelvin: collapses keep the lines and quadruple points")
--- A random foam after minimize, MCF and T1s and one more MCF step (the state file: five rounds
--- of c:minimize{max_iterations = 200} and c:evolve{flow = "mcf", tau = 1e-4, steps = 50} on
--- froth.foam{n = 16, seed = 1, h = 0.4, lloyd = 20}, with an experimental evolve that retried a
--- refused T1 at the mesh's own film side, then c:step{flow = "mcf", tau = 1e-4}, 2026-12-04): surface 94 is a triangular film of one facet whose side along a
--- triple line is among the short edges. Collapsing it emptied the film ("collapse_short_edges:
--- ... surface 94 has no facets"), so evolve raised; a collapse may not take a film's last facet.
+-- A saved random foam in which surface 94 is a triangular film of one facet whose side along
+-- a triple line is among the short edges. Collapsing that side emptied the film
+-- ("collapse_short_edges: ... surface 94 has no facets"), so evolve raised; a collapse may not
+-- take a film's last facet. How the state was made (2026-12-04): froth.foam{n = 16, seed = 1,
+-- h = 0.4, lloyd = 20}, five rounds of c:minimize{max_iterations = 200} and c:evolve{flow =
+-- "mcf", tau = 1e-4, steps = 50} under an experimental evolve that retried a refused T1 at the
+-- mesh's own film side, then one c:step{flow = "mcf", tau = 1e-4} and c:save.
 local here = (debug.getinfo(1, "S").source:sub(2):match("^(.*)/") or ".")
 local ff = froth.load(here .. "/../data/foam_film_of_one_facet.froth")
 local ff_surfaces, ff_volume = ff:info().surfaces, sum_of(ff:volumes())

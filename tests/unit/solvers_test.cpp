@@ -1,5 +1,7 @@
 // SparseDirectSolver: lagged factorisations must give the answers of fresh ones, and failures
 // must be SolverErrors, for both the Cholesky and the LU path.
+// The saddle-point block preconditioner and the blocked Schur complement give a direct
+// solve's answers.
 #include "core/errors.h"
 #include "solvers/schur_complement.h"
 #include "solvers/sparse_solvers.h"
