@@ -14,14 +14,16 @@
 /// assembled on Gamma~, plus two right-hand sides: the stiffness applied to the shift,
 /// A~ (X~ - X^m) in the position rows (A~ X^{m+1} = A~ X~ + A~ (dX - (X~ - X^m))), and the
 /// memory E = (b / a) D in the velocity equation (MCF: B~ E / tau' with B~ the normal block of
-/// (4.6b); SD: N~^T E in the kappa rows). The predictor is the first-order step itself (its
-/// linear form: (3.5)/(3.6), r > 1 weights at nu^m), whose local error is O(tau^2), so the
-/// geometry is second-order accurate. Jiang, Su and Zhang extrapolate, Gamma~ = 2 X^m -
-/// X^{m-1}; measured here, that is unstable at triple lines: the junctions' in-plane motion
-/// oscillates (BDF2's complex roots for lambda tau ~ 1) and extrapolation amplifies it 3x,
-/// collapsing the facets at the line within 20-60 steps of a double bubble; extrapolating
-/// tangential motion also carries a rotation of a sphere's vertices on forever (a neutral
-/// mode). The implicit predictor damps both as the first-order scheme does, for one more
+/// (4.6b); SD: N~^T E in the kappa rows). The predictor is the same linear BDF2 system
+/// assembled on Gamma^m (X~ = X^m, no shift; r > 1 weights at nu^m): BDF2 with explicit
+/// geometry, whose local error is O(tau^2) (the normals lag by one step), so the corrected
+/// geometry is second-order accurate. Its matrix is the corrector's on a surface O(tau) away,
+/// so both solve on one lagged factorisation. Jiang, Su and Zhang extrapolate the geometry
+/// instead, Gamma~ = 2 X^m - X^{m-1}; measured here, that is unstable at triple lines: the
+/// junctions' in-plane motion oscillates (BDF2's complex roots for lambda tau ~ 1) and
+/// extrapolation amplifies it 3x, collapsing the facets at the line within 20-60 steps of a
+/// double bubble; extrapolating tangential motion also carries a rotation of a sphere's
+/// vertices on forever (a neutral mode). An implicit predictor damps both, for one more
 /// linear solve per step. The r > 1 weights at the predictor's normals are explicit: an
 /// order-2 step is two linear solves for every anisotropy. The first step (no history) is
 /// the first-order scheme. Order 2 keeps no energy bound for all tau (BDF2 is A-stable, not

@@ -71,7 +71,6 @@ double cluster_size(const std::vector<Vec3>& X) {
 void Scheme::drop_systems() {
     matrix_ = SparseBuilder(), weight_jacobian_ = SparseBuilder();
     solver_ = SparseDirectSolver(solver_.kind()), newton_ = SparseDirectSolver(Factorization::LU);
-    corrector_ = SparseDirectSolver(solver_.kind());
 }
 
 void Scheme::reset() {
@@ -107,10 +106,15 @@ Eigen::VectorXd Scheme::solve(const Cluster& c, double tau, const PositionBasis&
 Eigen::VectorXd Scheme::solve_bdf2(const Cluster& c, const std::vector<Vec3>& previous,
                                    double previous_tau, double tau, const PositionBasis& P,
                                    StepCost& cost) {
-    // The predictor: the linear first-order step (r > 1 weights at nu^m), O(tau^2) from X^{m+1}.
-    // It only places the geometry, so its solve stops at a backward error of 1e-10: an error
-    // of about cond * 1e-10 |dX| in X~, far below the O(tau^2) the predictor is off anyway.
-    const Eigen::VectorXd z0 = solve_once(c, tau, P, nullptr, cost, 1e-10);
+    // The predictor: the linear BDF2 system with the geometry of X^m (r > 1 weights at nu^m),
+    // O(tau^2) from X^{m+1}. It only places the geometry, so its solve stops at a backward
+    // error of 1e-10: about cond * 1e-10 |dX| in X~, far below the O(tau^2) it is off anyway.
+    // Its matrix is the corrector's (step tau / a) on a surface O(tau) away, so both solve on
+    // one lagged factor. Measured on MCF of the icosphere at 10k vertices, tau = 4e-3, 25
+    // steps: one factorisation where the first-order predictor (step tau) and a corrector
+    // factor of its own took three, solves 2.36 -> 1.76 s, one factor in memory instead of two.
+    const Bdf2Step lagged = make_bdf2_step(c, c.positions(), previous, tau, previous_tau);
+    const Eigen::VectorXd z0 = solve_linear_bdf2(lagged, P, cost, 1e-10);
     std::vector<Vec3> predicted = displaced(c, P, z0);
     const Bdf2Step s = make_bdf2_step(c, predicted, previous, tau, previous_tau);
     cost.order = 2;
@@ -121,6 +125,11 @@ Eigen::VectorXd Scheme::solve_bdf2(const Cluster& c, const std::vector<Vec3>& pr
 
 Eigen::VectorXd Scheme::solve_corrector(const Cluster&, const Bdf2Step& s, const PositionBasis& P,
                                         StepCost& cost) {
+    return solve_linear_bdf2(s, P, cost, 1e-15);
+}
+
+Eigen::VectorXd Scheme::solve_linear_bdf2(const Bdf2Step& s, const PositionBasis& P,
+                                          StepCost& cost, double tolerance) {
     struct Reset { // the pointer must not outlive this call, whatever it throws
         Scheme& scheme;
         ~Reset() { scheme.bdf2_ = nullptr; }
@@ -128,7 +137,7 @@ Eigen::VectorXd Scheme::solve_corrector(const Cluster&, const Bdf2Step& s, const
     bdf2_ = &s;
     // The predictor's normals are explicit r > 1 weights: no Newton iteration (bdf2.h).
     assemble(s.predictor, s.effective_tau(), P, nullptr, cost);
-    return solve_checked(corrector_, matrix_.finish(), rhs_, s.tau, cost);
+    return solve_checked(solver_, matrix_.finish(), rhs_, s.tau, cost, tolerance);
 }
 
 Eigen::VectorXd Scheme::solve_newton(const Cluster& c, double tau, const PositionBasis& P,

@@ -51,10 +51,10 @@ struct StepCost {
     /// Surface diffusion: a solve of the step used the saddle point's block preconditioner
     /// (solvers/saddle_point.h) rather than an LU.
     bool saddle_blocks = false;
-    /// Order 2 only (0 otherwise): the shape's difference between the step and its first-order
-    /// predictor, max_v |Q_v^T (X_v - X1_v)| over the cluster's size (Q_v the unit normals of
-    /// the vertex's surfaces; schemes/bdf2.h shape_difference): the first-order step's local
-    /// error, an upper estimate of this step's.
+    /// Order 2 only (0 otherwise): the shape's difference between the step and its predictor
+    /// (the BDF2 step with the geometry of X^m), max_v |Q_v^T (X_v - X~_v)| over the cluster's
+    /// size (Q_v the unit normals of the vertex's surfaces; schemes/bdf2.h shape_difference):
+    /// the predictor's local error, O(tau^2), an upper estimate of this step's.
     double error_estimate = 0;
 };
 
@@ -72,7 +72,7 @@ struct FixedPointOptions {
 
 class Scheme {
   public:
-    explicit Scheme(Factorization kind) : solver_(kind), corrector_(kind) {}
+    explicit Scheme(Factorization kind) : solver_(kind) {}
     virtual ~Scheme() = default;
     /// A copy with the same patterns, factorisations and history: it steps bit for bit as this.
     virtual std::unique_ptr<Scheme> clone() const = 0;
@@ -86,8 +86,8 @@ class Scheme {
     virtual Eigen::VectorXd solve(const Cluster& c, double tau, const PositionBasis& P,
                                   const FixedPointOptions& fp, StepCost& cost);
     /// The order-2 step (bdf2.h) of length tau from the cluster c at X^m, whose previous step,
-    /// of length previous_tau, started at `previous`: the linear first-order step as the
-    /// predictor, then the BDF2 system on it (solve_corrector).
+    /// of length previous_tau, started at `previous`: the linear BDF2 system on X^m as the
+    /// predictor, then the same system on the predictor (solve_corrector), on one solver.
     /// \throw SolverError (singular or non-finite system)
     Eigen::VectorXd solve_bdf2(const Cluster& c, const std::vector<Vec3>& previous,
                                double previous_tau, double tau, const PositionBasis& P,
@@ -124,17 +124,20 @@ class Scheme {
                                const FacetNormals* lagged, StepCost& cost,
                                double tolerance = 1e-15);
     /// The order-2 corrector: one solve of the first-order system of step s.effective_tau()
-    /// on s.predictor with the BDF2 right-hand sides, on its own factorisation.
+    /// on s.predictor with the BDF2 right-hand sides, on the predictor's lagged factorisation.
     virtual Eigen::VectorXd solve_corrector(const Cluster& c, const Bdf2Step& s,
                                             const PositionBasis& P, StepCost& cost);
+    /// The linear BDF2 system of s on s.predictor, solved to the backward error `tolerance`.
+    Eigen::VectorXd solve_linear_bdf2(const Bdf2Step& s, const PositionBasis& P, StepCost& cost,
+                                      double tolerance);
     /// Newton's method for the r > 1 system (3.9), from X^m to convergence.
     Eigen::VectorXd solve_newton(const Cluster& c, double tau, const PositionBasis& P,
                                  const FixedPointOptions& fp, StepCost& cost);
 
     SparseBuilder matrix_;
     Eigen::VectorXd rhs_;
+    /// The step's solver; an order-2 step's predictor and corrector share it (Scheme::solve_bdf2).
     SparseDirectSolver solver_;
-    SparseDirectSolver corrector_; ///< the order-2 corrector's (its matrix is on the predictor)
     /// Set by a scheme that assembles with other pair weights than the cluster's own (the
     /// volume-exact step's averaged normals); null otherwise.
     const PairGeometry* weights_ = nullptr;

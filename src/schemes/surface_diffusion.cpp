@@ -106,7 +106,7 @@ void SurfaceDiffusionScheme::assemble_system(const Cluster& c, const PairGeometr
                                              const FacetNormals* lagged) {
     if (!Z_) Z_ = std::make_shared<const KappaBasis>(kappa_basis(c));
     assemble_sd(c, g, *Z_, P, tau, lagged, matrix_, rhs_);
-    for (SparseDirectSolver* s : {&solver_, &corrector_, &exact_solver_})
+    for (SparseDirectSolver* s : {&solver_, &exact_solver_})
         s->set_saddle_point(P.size(), saddle_solver_);
     if (kappa_rhs_) add_kappa_rhs(*Z_, *kappa_rhs_, P.size(), rhs_);
     if (bdf2_) { // order 2 (bdf2.h): N~^T (a dX - b D) / a = N~^T dX - N~^T E

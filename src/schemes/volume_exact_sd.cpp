@@ -157,7 +157,7 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_corrector_exact_volumes(const Clus
         Eigen::VectorXd rhs = Eigen::VectorXd::Zero(z0.size());
         add_kappa_rhs(*Z_, volume_rhs(s.predictor, g, Eigen::VectorXd::Unit(nb, b)), P.size(),
                       rhs);
-        Y.col(b) = solve_checked(corrector_, M, rhs, s.tau, cost);
+        Y.col(b) = solve_checked(solver_, M, rhs, s.tau, cost);
         for (int v = 0; v < n; ++v)
             U.block<3, 1>(3 * v, b) = P.displacement(Y.col(b), v);
     }
