@@ -70,7 +70,8 @@ double cluster_size(const std::vector<Vec3>& X) {
 
 void Scheme::drop_systems() {
     matrix_ = SparseBuilder(), weight_jacobian_ = SparseBuilder();
-    solver_ = SparseDirectSolver(solver_.kind()), newton_ = SparseDirectSolver(Factorization::LU);
+    solver_ = SparseDirectSolver(solver_.kind(), true, Ordering::NestedDissection);
+    newton_ = SparseDirectSolver(Factorization::LU);
 }
 
 void Scheme::reset() {

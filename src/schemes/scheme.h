@@ -72,7 +72,7 @@ struct FixedPointOptions {
 
 class Scheme {
   public:
-    explicit Scheme(Factorization kind) : solver_(kind) {}
+    explicit Scheme(Factorization kind) : solver_(kind, true, Ordering::NestedDissection) {}
     virtual ~Scheme() = default;
     /// A copy with the same patterns, factorisations and history: it steps bit for bit as this.
     virtual std::unique_ptr<Scheme> clone() const = 0;

@@ -27,6 +27,12 @@ enum class Factorization {
     LU,       ///< any nonsingular matrix, here symmetric indefinite saddle points: UMFPACK
 };
 
+/// The fill-reducing ordering of a Cholesky factor: CHOLMOD's default (AMD, METIS only when
+/// AMD's fill is high) analyses faster, METIS's nested dissection gives cheaper triangular
+/// solves. Time stepping solves many times on one factor and takes the second; minimize
+/// factorises every iteration and keeps the first (sparse_solvers.cpp has the measurements).
+enum class Ordering { Default, NestedDissection };
+
 /// How saddle points are solved: an LU (UMFPACK), GMRES with the block preconditioner of two
 /// Cholesky factors (saddle_point.h), or the blocks from kBlockThreshold unknowns on (Auto).
 enum class SaddleSolver { Auto, LU, Blocks };
@@ -46,8 +52,10 @@ struct SolveStats {
 
 class SparseDirectSolver {
   public:
-    /// reuse = false refactorises for every solve (the plain direct method, for comparisons).
-    explicit SparseDirectSolver(Factorization kind, bool reuse = true);
+    /// reuse = false refactorises for every solve (the plain direct method, for comparisons);
+    /// `ordering` is for Cholesky (the LU always orders by METIS).
+    explicit SparseDirectSolver(Factorization kind, bool reuse = true,
+                                Ordering ordering = Ordering::Default);
     Factorization kind() const { return kind_; }
     ~SparseDirectSolver();
     /// A copy shares the last factorisation (read-only, copy on write: whichever copy
@@ -96,10 +104,11 @@ class SparseDirectSolver {
     void factorize_long(const SparseMatrix& A);
     Eigen::MatrixXd apply_factor(const Eigen::MatrixXd& B) const;
     struct Impl;
-    static std::shared_ptr<Impl> configured_impl();
+    static std::shared_ptr<Impl> configured_impl(Ordering ordering);
     std::shared_ptr<Impl> impl_;
     Factorization kind_;
     bool reuse_;
+    Ordering ordering_;
     bool analyzed_ = false, factorized_ = false;
     int last_iterations_ = 0;
     int fresh_iterations_ = 0; ///< what the last fresh factorisation's solve took
