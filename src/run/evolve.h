@@ -18,7 +18,7 @@ struct EvolveOptions {
     Flow flow = Flow::SurfaceDiffusion;
     double tau = 0; ///< the step; with adaptive, the first step
     /// Error-controlled steps (tau = "auto"): order-2 steps whose error estimate
-    /// (StepCost::error_estimate, the first-order predictor's local error in the shape,
+    /// (StepCost::error_estimate, the predictor's local error in the shape,
     /// relative to the cluster's size) must stay below tol; a step that misses it is retried
     /// shorter, and each next tau is chosen from the last estimate, 0.2x to 2x, at most
     /// tau_max (0: no bound). A failing step (collapsing facet, singular system) is retried at
