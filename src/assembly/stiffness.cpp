@@ -24,22 +24,41 @@ void set_minus_stiffness_rhs(const Cluster& c, const PositionBasis& P, const Fac
     rhs.head(P.size()) = -P.restrict(apply_stiffness(c, c.positions(), lagged));
 }
 
-Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
-                                const FacetNormals* lagged) {
+namespace {
+
+/// y = A_gamma Y over the facets' corners: Y_v, plus the corner's lattice shift when Y holds
+/// positions (a periodic cluster's facets reach across the box), not when it is a motion.
+Eigen::VectorXd stiffness_times(const Cluster& c, const std::vector<Vec3>& Y,
+                                const FacetNormals* lagged, bool positions) {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(3 * c.n_vertices());
+    const auto corner = [&](const Tri& t, const std::array<Vec3, 3>& shift, int b) -> Vec3 {
+        return positions ? Vec3(Y[t[b]] + shift[b]) : Y[t[b]];
+    };
     for_each_element(
         c, lagged,
         [&](const Tri& t, const Eigen::Matrix3d& K, const std::array<Vec3, 3>& shift) {
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b)
-                    y.segment<3>(3 * t[a]) += K(a, b) * (X[t[b]] + shift[b]);
+                    y.segment<3>(3 * t[a]) += K(a, b) * corner(t, shift, b);
         },
         [&](const Tri& t, const ElementMatrix& E, const std::array<Vec3, 3>& shift) {
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b)
-                    y.segment<3>(3 * t[a]) += E.block<3, 3>(3 * a, 3 * b) * (X[t[b]] + shift[b]);
+                    y.segment<3>(3 * t[a]) += E.block<3, 3>(3 * a, 3 * b) * corner(t, shift, b);
         });
     return y;
+}
+
+} // namespace
+
+Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
+                                const FacetNormals* lagged) {
+    return stiffness_times(c, X, lagged, true);
+}
+
+Eigen::VectorXd apply_stiffness_to_motion(const Cluster& c, const std::vector<Vec3>& D,
+                                          const FacetNormals* lagged) {
+    return stiffness_times(c, D, lagged, false);
 }
 
 void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const std::vector<Vec3>& X,

@@ -27,6 +27,11 @@ void set_minus_stiffness_rhs(const Cluster& c, const PositionBasis& P, const Fac
 Eigen::VectorXd apply_stiffness(const Cluster& c, const std::vector<Vec3>& X,
                                 const FacetNormals* lagged = nullptr);
 
+/// y = A_gamma D for a motion D (one vector per vertex, the same for all its periodic images):
+/// apply_stiffness without the lattice shifts that a periodic cluster's corner positions carry.
+Eigen::VectorXd apply_stiffness_to_motion(const Cluster& c, const std::vector<Vec3>& D,
+                                          const FacetNormals* lagged = nullptr);
+
 /// The Newton correction of the position block for r > 1 (numerics.md "Anisotropic schemes"):
 /// the derivative of the (3.9) weights w(nu(X)) in A_gamma(w(nu(X))) X, T^T C T with
 /// C = sum over the facets of r > 1 surfaces of sigma_i weight_jacobian (elements.h), in a

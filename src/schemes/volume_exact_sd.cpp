@@ -22,7 +22,7 @@
 #include "core/format.h"
 #include "solvers/anderson.h"
 
-#include <Eigen/LU>
+#include <Eigen/QR>
 
 #include <limits>
 #include <string>
@@ -175,7 +175,10 @@ Eigen::VectorXd SurfaceDiffusionScheme::solve_corrector_exact_volumes(const Clus
         if (error < best_error) best = z, best_error = error;
         if (error <= kVolumeTolerance || stalled) break;
         const Eigen::MatrixXd J = body_volume_gradients(c, X).transpose() * U;
-        coef -= J.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(V.data(), nb) - target);
+        // Minimum-norm: in a periodic box filled by its cells the volumes sum to the box's,
+        // so J is singular (a uniform c moves no volume) and an LU's update would be garbage.
+        coef -= J.completeOrthogonalDecomposition().solve(
+            Eigen::Map<const Eigen::VectorXd>(V.data(), nb) - target);
     }
     z = std::move(best);
     cost.volume_error = best_error;
