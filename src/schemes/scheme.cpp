@@ -90,7 +90,8 @@ void Scheme::assemble(const Cluster& c, double tau, const PositionBasis& P,
     assemble_system(c, weights_ ? *weights_ : own, P, tau, lagged);
     // Order 2 assembles on the predictor X~ = c.positions(): A~ X^{m+1} = A~ X~ + A~ (dX - shift).
     // (The shift is a motion: no lattice offsets at a periodic cluster's box faces.)
-    if (bdf2_) rhs_.head(P.size()) += P.restrict(apply_stiffness_to_motion(c, bdf2_->shift, lagged));
+    if (bdf2_)
+        rhs_.head(P.size()) += P.restrict(apply_stiffness_to_motion(c, bdf2_->shift, lagged));
     cost.assemble_seconds += seconds_since(t0);
 }
 
