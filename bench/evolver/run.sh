@@ -27,8 +27,8 @@ done
 echo
 echo "== Mean curvature flow of the unit sphere, 10242 vertices, to t = 0.1 (about 12 minutes)"
 echo "Evolver  vertices  steps  seconds  R0  R(T)  error |(R0^2 - R^2) / 4T - 1|  (scales 4e-4 .. 1e-4)"
-# Three rounds, each code in turn: this machine's speed varies by up to 2x from run to run
-# (Evolver's identical 333 steps took 4.8 to 10.5 s within minutes), so compare the best of three.
+# Three rounds, each code in turn: this machine's speed varies by up to 4x from run to run
+# (Evolver's identical 1000 steps took 14.7 to 60.3 s within the hour), so compare the best of three.
 for round in 1 2 3; do
   echo "round $round:"
   for scale in 4e-4 3e-4 2e-4 1e-4; do
