@@ -414,7 +414,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
 }
 
 /// evolve's `events`: {{kind, where, t, step, energy_before, energy_after; pops: body,
-/// neighbours; T1s: line, cells}, ...}
+/// neighbours; T1s: line, cells; inverse T1s: surface, cells}, ...}
 void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& events) {
     lua_createtable(L, static_cast<int>(events.size()), 0);
     for (std::size_t i = 0; i < events.size(); ++i) {
@@ -430,8 +430,9 @@ void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& ev
             set_integer(L, "body", e.body + 1);
             set_integer(L, "neighbours", e.neighbours);
         }
-        if (e.line >= 0) {
-            set_integer(L, "line", e.line + 1);
+        if (e.line >= 0 || e.film >= 0) {
+            if (e.line >= 0) set_integer(L, "line", e.line + 1);
+            if (e.film >= 0) set_integer(L, "surface", e.film + 1);
             push_integers(L, std::vector<int>{e.cells[0] + 1, e.cells[1] + 1});
             lua_setfield(L, -2, "cells");
         }

@@ -187,6 +187,22 @@ int l_t1(lua_State* L) {
     });
 }
 
+/// c:t1_inverse(surface) -> {surface, cells, point, where, removed_vertices, energy_before,
+/// energy_after}: a triangular film between two cells becomes a triple line (the inverse T1).
+int l_t1_inverse(lua_State* L) {
+    ClusterHandle& h = self(L);
+    ChangeGuard changing(L, h, "t1_inverse");
+    const int film = check_id(L, 2, h.cluster.n_surfaces(), "surface", "surfaces");
+    return guarded(L, [&] {
+        TransitionRecord record;
+        apply_transition(L, h, t1_film_to_line(h.cluster, film, &record), record); // throws first
+        set_integer(L, "surface", film + 1);
+        push_integers(L, std::vector<int>{record.cells[0] + 1, record.cells[1] + 1});
+        lua_setfield(L, -2, "cells");
+        return 1;
+    });
+}
+
 /// The one length option of c:collapse_edges / c:split_edges, positive and finite.
 double edge_length_option(lua_State* L, const char* op, const char* key) {
     Options o(L, 2, op);
@@ -265,6 +281,7 @@ const luaL_Reg methods[] = {
     {"equiangulate", l_equiangulate},
     {"pop_body", l_pop_body},
     {"t1", l_t1},
+    {"t1_inverse", l_t1_inverse},
     {"collapse_edges", l_collapse_edges},
     {"split_edges", l_split_edges},
     {"minimize", l_minimize},

@@ -30,24 +30,6 @@ int index_of(const Tri& t, int v) {
     return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
 }
 
-/// The bodies on the two sides of each surface (-1: the outside or nothing).
-std::vector<std::array<int, 2>> surface_cells(const Cluster& c) {
-    std::vector<std::vector<int>> listed(c.n_surfaces());
-    for (int k = 0; k < c.n_bodies(); ++k)
-        for (const BodyFace& f : c.bodies()[k].faces) listed[f.surface].push_back(k);
-    std::vector<std::array<int, 2>> cells(c.n_surfaces(), {-1, -1});
-    for (int s = 0; s < c.n_surfaces(); ++s)
-        for (std::size_t i = 0; i < listed[s].size() && i < 2; ++i) cells[s][i] = listed[s][i];
-    return cells;
-}
-
-/// The surfaces with a facet at vertex v.
-std::set<int> surfaces_at(const Cluster& c, int v) {
-    std::set<int> at;
-    for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) at.insert(c.pair_surface(k));
-    return at;
-}
-
 /// What the surgery needs to know about one end (a or b) of the line.
 struct LineEnd {
     int vertex = -1;
@@ -57,8 +39,9 @@ struct LineEnd {
 
 class T1 {
   public:
-    T1(const Cluster& c, int line, double min_side)
-        : c_(c), line_(line), min_side_(min_side), name_(line_name(line)),
+    T1(const Cluster& c, int line, double min_side, double smallest_side)
+        : c_(c), line_(line), min_side_(min_side), smallest_side_(smallest_side),
+          name_(line_name(line)),
           cells_(surface_cells(c)) {}
 
     Cluster run(TransitionRecord* record);
@@ -67,24 +50,19 @@ class T1 {
     void check_line();
     LineEnd end_at(int v);
     void unwrap_line();
-    void place_corners();
+    double first_side() const;
+    void place_corners(double side);
     int corner_of(int film) const;
     void collapse_line_films(ClusterSpec& spec);
-    Vec3 old_area(int surface, std::size_t facet) const;
     void split_fans(ClusterSpec& spec, const LineEnd& end);
     double mean_edge_at(int v) const;
-    void check_no_facet_turns(const ClusterSpec& spec, const std::vector<Vec3>& V) const;
+    std::vector<Vec3> place_film(const ClusterSpec& spec);
 
-    /// A facet that took a new corner: where it is in the new spec and its old area vector.
-    struct Moved {
-        int surface, facet;
-        Vec3 area;
-    };
-    std::vector<Moved> moved_;
+    std::vector<surgery::MovedFacet> moved_; // the facets that took a new corner
 
     const Cluster& c_;
     const int line_;
-    const double min_side_;
+    const double min_side_, smallest_side_;
     const std::string name_;
     const std::vector<std::array<int, 2>> cells_; // the bodies on each surface's sides
     std::vector<int> seg_;                 // the line's vertices, a first
@@ -95,6 +73,7 @@ class T1 {
     LineEnd a_, b_;
     std::array<Vec3, 3> p_;                // the new corners, in a's frame
     double length_ = 0;
+    double side_ = 0;                      // the new film's side
     int n_ = 0;                            // c's vertex count: the corners are n_, n_+1, n_+2
 };
 
@@ -119,7 +98,7 @@ LineEnd T1::end_at(int v) {
     LineEnd end;
     end.vertex = v;
     std::set<int> fourth;
-    for (int s : surfaces_at(c_, v)) {
+    for (int s : surgery::surfaces_at(c_, v)) {
         if (std::find(films_.begin(), films_.end(), s) != films_.end()) continue;
         end.films.push_back(s);
         for (int k : cells_[s])
@@ -147,7 +126,7 @@ void T1::unwrap_line() {
 double T1::mean_edge_at(int v) const {
     double sum = 0;
     int count = 0;
-    for (int si : surfaces_at(c_, v)) {
+    for (int si : surgery::surfaces_at(c_, v)) {
         const Surface& s = c_.surface(si);
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
             const int k = index_of(s.triangles[f], v);
@@ -160,16 +139,21 @@ double T1::mean_edge_at(int v) const {
     return count ? sum / count : 0;
 }
 
+/// The side the new film is first tried at: the line's length, half the mean edge at its
+/// ends, or min_side, whichever is largest.
+double T1::first_side() const {
+    return std::max({length_, min_side_,
+                     0.25 * (mean_edge_at(seg_.front()) + mean_edge_at(seg_.back()))});
+}
+
 /// The corners p_s: in the plane through the line's midpoint normal to it, each in the
-/// direction its film leaves the line (the film's conormal there).
-void T1::place_corners() {
+/// direction its film leaves the line (the film's conormal there), side / sqrt(3) from it.
+void T1::place_corners(double side) {
     const Vec3 ua = u_[seg_.front()], ub = u_[seg_.back()];
     const Vec3 mid = 0.5 * (ua + ub);
     Vec3 along = ub - ua;
     if (along.norm() == 0) along = u_[seg_[1]] - ua;
     along.normalize();
-    const double side = std::max({length_, min_side_,
-                                  0.25 * (mean_edge_at(seg_.front()) + mean_edge_at(seg_.back()))});
     const std::set<int> on_line(seg_.begin(), seg_.end());
     for (int i = 0; i < 3; ++i) {
         const Surface& s = c_.surface(films_[i]);
@@ -194,29 +178,25 @@ void T1::place_corners() {
     }
 }
 
-Vec3 T1::old_area(int surface, std::size_t facet) const {
-    const auto x = c_.surface(surface).corners(c_.positions(), facet);
-    return (x[1] - x[0]).cross(x[2] - x[0]);
-}
-
-/// Moving a corner to a new point must not turn a facet over (a sliver next to the line
-/// would): the cell walk that orients the bodies would then go astray.
-void T1::check_no_facet_turns(const ClusterSpec& spec, const std::vector<Vec3>& V) const {
-    for (const Moved& m : moved_) {
-        const auto& s = spec.surfaces[m.surface];
-        std::array<Vec3, 3> x;
-        for (int k = 0; k < 3; ++k) {
-            x[k] = V[s.triangles[m.facet][k]];
-            if (!s.offsets.empty()) {
-                const Offset& o = s.offsets[m.facet][k];
-                x[k] += *spec.period * Vec3(o[0], o[1], o[2]);
-            }
+/// The positions after the T1: c's, then the three corners at the largest side from
+/// first_side() down, halving, to the line's length or smallest_side that turns no facet
+/// over (where the mesh beside the line is finer than the film would be).
+std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
+    const double smallest = std::max(length_, smallest_side_);
+    int turned = -1;
+    for (double side = first_side();; side *= 0.5) {
+        place_corners(side);
+        std::vector<Vec3> V = c_.positions();
+        V.insert(V.end(), p_.begin(), p_.end());
+        if (!surgery::turns_a_facet(spec, V, moved_, &turned)) {
+            side_ = side;
+            return V;
         }
-        if (!surgery::keeps_its_side(m.area, x))
-            throw TopologyError(name_ + ": the T1 would turn a facet of surface " +
-                                std::to_string(m.surface + 1) + " over (a sliver next to the "
-                                "line); the mesh there is too fine across the line for it");
+        if (0.5 * side < smallest) break;
     }
+    throw TopologyError(name_ + ": the T1 would turn a facet of surface " +
+                        std::to_string(turned + 1) + " over (a sliver next to the line); the "
+                        "mesh there is too fine across the line for it");
 }
 
 int T1::corner_of(int film) const {
@@ -228,70 +208,16 @@ int T1::corner_of(int film) const {
 /// In the line's films the line's vertices become the film's corner; facets with two or more
 /// corners on the line go.
 void T1::collapse_line_films(ClusterSpec& spec) {
-    const std::set<int> on_line(seg_.begin(), seg_.end());
-    for (int i = 0; i < 3; ++i) {
-        ClusterSpec::Surface& s = spec.surfaces[films_[i]];
-        ClusterSpec::Surface out;
-        out.sigma = s.sigma;
-        std::vector<std::pair<int, int>> link;
-        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-            Tri t = s.triangles[f];
-            std::array<Offset, 3> k{};
-            if (!s.offsets.empty()) k = s.offsets[f];
-            int on = 0;
-            for (int j = 0; j < 3; ++j) {
-                if (!on_line.count(t[j])) continue;
-                ++on;
-                for (int x = 0; x < 3; ++x) k[j][x] -= d_.at(t[j])[x];
-                t[j] = n_ + i;
-            }
-            if (on > 1) continue;
-            for (int j = 0; j < 3; ++j)
-                if (t[j] == n_ + i) link.push_back({t[(j + 1) % 3], t[(j + 2) % 3]});
-            if (on == 1)
-                moved_.push_back({films_[i], static_cast<int>(out.triangles.size()),
-                                  old_area(films_[i], f)});
-            out.triangles.push_back(t);
-            if (spec.period) out.offsets.push_back(k);
-        }
-        surgery::check_one_fan(link, films_[i], name_);
-        s = std::move(out);
-    }
+    for (int i = 0; i < 3; ++i)
+        surgery::collapse_onto(c_, spec, films_[i], d_, n_ + i, moved_, name_);
 }
 
-/// Each film of the fourth cell at this end: its fan at the end vertex u_0 ... u_n (facets
-/// (v, u_j, u_{j+1})) from the triple line towards film X (u_0) to the one towards film Y
-/// (u_n) takes X's corner for j < m and Y's for j >= m, and the facet (p_X, u_m, p_Y) fills
-/// the gap (m = ceil(n / 2), so the facets at both triple lines take their own corner).
+/// Each film of the fourth cell at this end: its fan at the end vertex from the triple line
+/// towards film X to the one towards film Y splits between X's corner and Y's
+/// (surgery::split_fan).
 void T1::split_fans(ClusterSpec& spec, const LineEnd& end) {
     const int v = end.vertex;
-    const Offset dv = d_.at(v);
     for (int si : end.films) {
-        ClusterSpec::Surface& s = spec.surfaces[si];
-        std::map<int, int> next, facet_from; // link u_j -> u_{j+1}, and its facet
-        std::set<int> targets;
-        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-            const Tri& t = s.triangles[f];
-            for (int j = 0; j < 3; ++j) {
-                if (t[j] != v) continue;
-                const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
-                if (!next.emplace(x, y).second || !targets.insert(y).second)
-                    throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " is "
-                                        "folded at vertex " + std::to_string(v + 1));
-                facet_from[x] = static_cast<int>(f);
-            }
-        }
-        int start = -1;
-        for (const auto& [x, y] : next)
-            if (!targets.count(x)) start = x;
-        if (start < 0)
-            throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " surrounds "
-                                "vertex " + std::to_string(v + 1) + "; it must end there");
-        std::vector<int> u{start};
-        while (next.count(u.back()) && u.size() <= next.size()) u.push_back(next[u.back()]);
-        if (u.size() != next.size() + 1)
-            throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " is pinched "
-                                "at vertex " + std::to_string(v + 1));
         // the films of the line at the fan's two ends: on the junction edges (v, u_0), (v, u_n)
         const auto film_towards = [&](int w) {
             for (int e : c_.vertex_junction_edges(v)) {
@@ -303,24 +229,7 @@ void T1::split_fans(ClusterSpec& spec, const LineEnd& end) {
             throw TopologyError(name_ + ": surface " + std::to_string(si + 1) + " does not end "
                                 "on the line's films at vertex " + std::to_string(v + 1));
         };
-        const int pX = film_towards(u.front()), pY = film_towards(u.back());
-        const int n = static_cast<int>(u.size()) - 1, m = (n + 1) / 2;
-        for (int j = 0; j < n; ++j) {
-            const int f = facet_from[u[j]];
-            const int k = index_of(s.triangles[f], v);
-            moved_.push_back({si, f, old_area(si, f)});
-            s.triangles[f][k] = j < m ? pX : pY;
-            if (!s.offsets.empty())
-                for (int x = 0; x < 3; ++x) s.offsets[f][k][x] -= dv[x];
-        }
-        // the gap facet, in the frame of facet m - 1 (which holds p_X, u_{m-1}, u_m)
-        const int g = facet_from[u[m - 1]];
-        s.triangles.push_back({pX, u[m], pY});
-        if (!s.offsets.empty()) {
-            const Tri& t = s.triangles[g];
-            const Offset kp = s.offsets[g][index_of(t, pX)];
-            s.offsets.push_back({kp, s.offsets[g][index_of(t, u[m])], kp});
-        }
+        surgery::split_fan(c_, spec, si, v, d_.at(v), film_towards, moved_, name_);
     }
 }
 
@@ -334,7 +243,6 @@ Cluster T1::run(TransitionRecord* record) {
                                          : "body " + std::to_string(a_.cell + 1)) +
                             ") meets both its ends; a film between it and itself cannot form");
     unwrap_line();
-    place_corners();
     n_ = c_.n_vertices();
 
     ClusterSpec spec = cluster_spec(c_);
@@ -350,9 +258,7 @@ Cluster T1::run(TransitionRecord* record) {
     for (int cell : {a_.cell, b_.cell})
         if (cell >= 0) spec.bodies[cell].push_back(new_film);
 
-    std::vector<Vec3> V = c_.positions();
-    V.insert(V.end(), p_.begin(), p_.end());
-    check_no_facet_turns(spec, V);
+    std::vector<Vec3> V = place_film(spec);
     const std::vector<int> used = surgery::keep_used_vertices(spec, V);
     surgery::copy_vertex_lists(c_, [&](int v) { return used[v]; }, spec);
     Cluster r = surgery::rebuild(std::move(spec), name_, "the T1");
@@ -377,7 +283,8 @@ Cluster T1::run(TransitionRecord* record) {
         record->removed_facets = c_.n_facets() + 7 - r.n_facets(); // a gap facet per fan, the film
         record->where = "triple line " + std::to_string(line_ + 1) + " (length " + fmt(length_) +
                         ", vertices " + std::to_string(seg_.front() + 1) + " .. " +
-                        std::to_string(seg_.back() + 1) + ") became a film between " +
+                        std::to_string(seg_.back() + 1) + ") became a film of side " +
+                        fmt(side_) + " between " +
                         cell_name(a_.cell) + " and " + cell_name(b_.cell) + " at " +
                         point_text(mid);
     }
@@ -386,11 +293,12 @@ Cluster T1::run(TransitionRecord* record) {
 
 } // namespace
 
-Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, double min_side) {
+Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, double min_side,
+                        double smallest_side) {
     if (line < 0 || line >= static_cast<int>(c.triple_lines().size()))
         throw InvalidInput("t1: triple line " + std::to_string(line + 1) + " does not exist (the "
                            "cluster has " + std::to_string(c.triple_lines().size()) + ")");
-    return T1(c, line, min_side).run(record);
+    return T1(c, line, min_side, smallest_side).run(record);
 }
 
 } // namespace froth

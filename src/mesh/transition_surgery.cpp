@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 
 namespace froth::surgery {
 
@@ -90,4 +91,135 @@ Offset lattice_offset(const Cluster& c, const Vec3& unwrapped, const Vec3& store
             static_cast<int>(std::lround(k.z()))};
 }
 
+std::set<int> surfaces_at(const Cluster& c, int v) {
+    std::set<int> at;
+    for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) at.insert(c.pair_surface(k));
+    return at;
+}
+
+Vec3 facet_area(const Cluster& c, int surface, std::size_t facet) {
+    const auto x = c.surface(surface).corners(c.positions(), facet);
+    return (x[1] - x[0]).cross(x[2] - x[0]);
+}
+
+namespace {
+
+int index_of(const Tri& t, int v) {
+    return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+}
+
+} // namespace
+
+void collapse_onto(const Cluster& c, ClusterSpec& spec, int si, const std::map<int, Offset>& d,
+                   int p, std::vector<MovedFacet>& moved, const std::string& what) {
+    ClusterSpec::Surface& s = spec.surfaces[si];
+    ClusterSpec::Surface out;
+    out.sigma = s.sigma;
+    std::vector<std::pair<int, int>> link;
+    for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+        Tri t = s.triangles[f];
+        std::array<Offset, 3> k{};
+        if (!s.offsets.empty()) k = s.offsets[f];
+        int on = 0;
+        for (int j = 0; j < 3; ++j) {
+            const auto it = d.find(t[j]);
+            if (it == d.end()) continue;
+            ++on;
+            for (int x = 0; x < 3; ++x) k[j][x] -= it->second[x];
+            t[j] = p;
+        }
+        if (on > 1) continue;
+        if (on == 1) {
+            const int j = index_of(t, p);
+            link.push_back({t[(j + 1) % 3], t[(j + 2) % 3]});
+            moved.push_back({si, static_cast<int>(out.triangles.size()), facet_area(c, si, f)});
+        }
+        out.triangles.push_back(t);
+        if (spec.period) out.offsets.push_back(k);
+    }
+    check_one_fan(link, si, what);
+    s = std::move(out);
+}
+
+void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset& dv,
+               const std::function<int(int)>& corner_towards, std::vector<MovedFacet>& moved,
+               const std::string& what) {
+    ClusterSpec::Surface& s = spec.surfaces[si];
+    const std::string at = "surface " + std::to_string(si + 1);
+    const std::string vertex = " vertex " + std::to_string(v + 1);
+    std::map<int, int> next, facet_from; // link u_j -> u_{j+1}, and its facet
+    std::set<int> targets;
+    for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+        const Tri& t = s.triangles[f];
+        const int j = index_of(t, v);
+        if (j == 3) continue;
+        const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
+        if (!next.emplace(x, y).second || !targets.insert(y).second)
+            throw TopologyError(what + ": " + at + " is folded at" + vertex);
+        facet_from[x] = static_cast<int>(f);
+    }
+    int start = -1;
+    for (const auto& [x, y] : next)
+        if (!targets.count(x)) start = x;
+    if (start < 0)
+        throw TopologyError(what + ": " + at + " surrounds" + vertex + "; it must end there");
+    std::vector<int> u{start};
+    while (next.count(u.back()) && u.size() <= next.size()) u.push_back(next[u.back()]);
+    if (u.size() != next.size() + 1)
+        throw TopologyError(what + ": " + at + " is pinched at" + vertex);
+    const int p = corner_towards(u.front()), q = corner_towards(u.back());
+    const int n = static_cast<int>(u.size()) - 1, m = (n + 1) / 2;
+    for (int j = 0; j < n; ++j) {
+        const int f = facet_from[u[j]];
+        const int k = index_of(s.triangles[f], v);
+        moved.push_back({si, f, facet_area(c, si, f)});
+        s.triangles[f][k] = j < m ? p : q;
+        if (!s.offsets.empty())
+            for (int x = 0; x < 3; ++x) s.offsets[f][k][x] -= dv[x];
+    }
+    // the gap facet, in the frame of facet m - 1 (which holds p, u_{m-1}, u_m)
+    const int g = facet_from[u[m - 1]];
+    s.triangles.push_back({p, u[m], q});
+    if (!s.offsets.empty()) {
+        const Tri& t = s.triangles[g];
+        const Offset kp = s.offsets[g][index_of(t, p)];
+        s.offsets.push_back({kp, s.offsets[g][index_of(t, u[m])], kp});
+    }
+}
+
+bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
+                   const std::vector<MovedFacet>& moved, int* surface) {
+    for (const MovedFacet& m : moved) {
+        const auto& s = spec.surfaces[m.surface];
+        std::array<Vec3, 3> x;
+        for (int k = 0; k < 3; ++k) {
+            x[k] = V[s.triangles[m.facet][k]];
+            if (!s.offsets.empty()) {
+                const Offset& o = s.offsets[m.facet][k];
+                x[k] += *spec.period * Vec3(o[0], o[1], o[2]);
+            }
+        }
+        if (!keeps_its_side(m.area, x)) {
+            if (surface) *surface = m.surface;
+            return true;
+        }
+    }
+    return false;
+}
+
 } // namespace froth::surgery
+
+namespace froth {
+
+std::vector<std::array<int, 2>> surface_cells(const Cluster& c) {
+    std::vector<std::vector<int>> listed(c.n_surfaces());
+    for (int k = 0; k < c.n_bodies(); ++k)
+        for (const BodyFace& f : c.bodies()[k].faces) listed[f.surface].push_back(k);
+    std::vector<std::array<int, 2>> cells(c.n_surfaces(), {-1, -1});
+    for (int s = 0; s < c.n_surfaces(); ++s)
+        for (std::size_t i = 0; i < listed[s].size() && i < 2; ++i) cells[s][i] = listed[s][i];
+    return cells;
+}
+
+} // namespace froth
+

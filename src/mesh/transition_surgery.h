@@ -3,9 +3,12 @@
 /// after mesh surgery. Internal to src/mesh.
 
 #include "mesh/cluster.h"
+#include "mesh/transitions.h"
 
 #include <array>
 #include <functional>
+#include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,5 +41,41 @@ bool keeps_its_side(const Vec3& old_area, const std::array<Vec3, 3>& y);
 
 /// Integer lattice offsets d with u = X + L d (all zero without a period).
 Offset lattice_offset(const Cluster& c, const Vec3& unwrapped, const Vec3& stored);
+
+/// The surfaces with a facet at vertex v.
+std::set<int> surfaces_at(const Cluster& c, int v);
+
+/// The area vector of facet f of surface s of c (its corners in the facet's frame).
+Vec3 facet_area(const Cluster& c, int surface, std::size_t facet);
+
+/// A facet that took a new corner: where it is in the new spec and its area vector in c.
+struct MovedFacet {
+    int surface, facet;
+    Vec3 area;
+};
+
+/// Surface si of spec (still c's facets): the vertices that are keys of `d` become the new
+/// vertex p, their corner offsets less d (each vertex's lattice offset in p's frame); facets
+/// with two or more such corners go, the others that take p are added to `moved`.
+/// 	hrow TopologyError "<what>: ..." if p's facets would not form one fan.
+void collapse_onto(const Cluster& c, ClusterSpec& spec, int si, const std::map<int, Offset>& d,
+                   int p, std::vector<MovedFacet>& moved, const std::string& what);
+
+/// Surface si of spec (c's facets, or with facets appended): its fan at vertex v, facets
+/// (v, u_j, u_{j+1}) from u_0 to u_n along its link, splits between the new corners
+/// p = corner_towards(u_0) and q = corner_towards(u_n): facets j < m take p, the others q
+/// (m = ceil(n / 2), so the facets at both ends of the fan take their own corner), their
+/// offsets at v less dv (v's lattice offset in the corners' frame), and the new facet
+/// (p, u_m, q) fills the gap; its edge q -> p is a new junction edge.
+/// 	hrow TopologyError "<what>: ..." if the fan is folded, closed or pinched at v.
+void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset& dv,
+               const std::function<int(int)>& corner_towards, std::vector<MovedFacet>& moved,
+               const std::string& what);
+
+/// True if a moved facet turns over or flattens at positions V (keeps_its_side); the first
+/// such facet's surface into *surface. Moving corners must not: the cell walk that orients
+/// the bodies would go astray.
+bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
+                   const std::vector<MovedFacet>& moved, int* surface = nullptr);
 
 } // namespace froth::surgery

@@ -13,15 +13,22 @@ namespace froth {
 
 /// What a transition did, for event lists and messages.
 struct TransitionRecord {
-    std::string kind;    ///< "pop body", "T1"
+    std::string kind;    ///< "pop body", "T1", "inverse T1"
     std::string where;   ///< for people: "body 3 (volume 1e-05, 4 neighbouring cells) at (x, y, z)"
     int body = -1;       ///< pop: the body that vanished (0-based, its id before the pop)
     int line = -1;       ///< T1: the triple line that became a film (0-based, before)
-    std::array<int, 2> cells{-1, -1}; ///< T1: the bodies the new film lies between (-1: outside)
+    int film = -1;       ///< inverse T1: the film that became a line (0-based, before)
+    /// T1: the bodies the new film lies between; inverse T1: those the film lay between
+    /// (-1: outside)
+    std::array<int, 2> cells{-1, -1};
     Vec3 point = Vec3::Zero(); ///< where it collapsed
     int neighbours = 0;  ///< pop: the cells around it (the outside counts as one)
     int removed_vertices = 0, removed_facets = 0;
 };
+
+/// The bodies on the two sides of each surface (-1: the outside or nothing; a film between a
+/// cell and its own periodic image has it on both sides).
+std::vector<std::array<int, 2>> surface_cells(const Cluster& c);
 
 /// Evolver's `pop` of a vanishing cell: body `body` collapses to one point, its films go, and
 /// the films around it close over the point. That point is a Plateau point exactly when the
@@ -47,17 +54,41 @@ Cluster pop_body(const Cluster& c, int body, TransitionRecord* record = nullptr)
 /// three corners are new quadruple points, one on each of the line's films (A|B, B|C, C|A),
 /// in the plane through the line's midpoint normal to it, at distance side / sqrt(3) from
 /// it, side = the largest of the line's length, half the mean length of the edges at a and
-/// b, and min_side; its edges are new triple lines (D, E, A), (D, E, B), (D, E, C). The line's
+/// b, and min_side, or where that would turn a facet beside the line over (the mesh there
+/// finer than the film), that side halved until none turns, but not below the line's length
+/// or smallest_side; its edges are new triple lines (D, E, A), (D, E, B), (D, E, C). The line's
 /// films lose it (their facets along it go); each film of D at a and of E at b is split at a
 /// and b between two of the new corners. The new film takes the tension, anisotropy and
 /// mobility of the first film of D at a, and is the last surface; bodies, their reference and
 /// target volumes are kept (the surgery moves a volume of order side^3).
-/// 	hrow InvalidInput for a line id out of range; TopologyError (naming the line and why,
+/// \throw InvalidInput for a line id out of range; TopologyError (naming the line and why,
 /// nothing changed) for a closed line, one whose ends are not two distinct quadruple points,
 /// whose ends touch the same fourth cell (D = E), which meets walls, fixed or curve vertices,
-/// or whose films would be pinched or folded by the surgery (a mesh too coarse there).
+/// whose films would be pinched or folded by the surgery (a mesh too coarse there), or where
+/// every side allowed turns a facet over.
 Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = nullptr,
-                        double min_side = 0);
+                        double min_side = 0, double smallest_side = 0);
+
+/// The inverse T1 (the H -> I transition, Evolver's pop_tri_to_edge): surface `surface`, a
+/// film between cells D and E (D != E) bounded by three open triple lines between three
+/// quadruple points, the lines' third cells A, B, C distinct, becomes a triple line between
+/// A, B and C, from a new quadruple point a (cells A, B, C, D) to b (A, B, C, E). a and b lie
+/// on the film's normal through its (area-weighted) centre, a towards D, length apart:
+/// length = the larger of the sides' mean length and min_length, or where that would turn a
+/// facet over, that halved until none turns (at most ten times, not below smallest_length).
+/// The film goes; in each film D|X its side's vertices become a (its facets along the side
+/// go), in E|X they become b; the fan of each film X|Y at its corner splits between a and b
+/// with a new facet, whose edge is the new line's. Surfaces after `surface` move down one id
+/// and keep their tensions, anisotropies and mobilities; bodies, their reference and target
+/// volumes are kept (the surgery moves a volume of order side^3). This is t1_line_to_film
+/// backwards.
+/// 	hrow InvalidInput for a surface id out of range; TopologyError (naming the surface and
+/// why, nothing changed) for a film between a cell and itself, one that is not a disk
+/// bounded by three triple lines between three quadruple points, with the same third cell
+/// on two sides, with fixed or wall vertices, whose collapse would pinch or fold a film, or
+/// where every length allowed turns a facet over.
+Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record = nullptr,
+                        double min_length = 0, double smallest_length = 0);
 
 /// Mesh upkeep: what collapse_short_edges made.
 struct EdgeCollapseResult {

@@ -12,8 +12,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 
 namespace froth {
 namespace {
@@ -63,11 +65,18 @@ void draw_progress(std::FILE* out, const EvolveResult& r, const StepReport& s, d
     std::fflush(out);
 }
 
+/// The watch of a run: with transitions, lines between quadruple points are left to the T1s.
+WatchOptions watch_options(const EvolveOptions& o) {
+    WatchOptions w = o.watch;
+    w.lines_to_transitions = o.transitions;
+    return w;
+}
+
 /// One evolution: the loop of evolve() split into its parts.
 class Run {
   public:
     Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o)
-        : c_(c), stepper_(stepper), o_(o), watch_(o.watch), t_start_(c.time()),
+        : c_(c), stepper_(stepper), o_(o), watch_(watch_options(o)), t_start_(c.time()),
           t_end_(c.time() + o.duration), uncrossed_(c.positions()), uncrossed_t_(c.time()) {
         for (int b = 0; b < c.n_bodies(); ++b) original_body_.push_back(b);
         r_.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
@@ -81,6 +90,7 @@ class Run {
         }
         if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper);
         write_frame(); // the start, so a bad path fails before any step
+        if (o.transitions) remember_junctions();
     }
 
     /// Takes one step and everything that follows it; false ends the run.
@@ -231,19 +241,24 @@ class Run {
     bool watch_for_topology() {
         std::optional<TopologyEvent> e;
         refused_.clear();
+        made_.clear();
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
             if (o_.transitions && made < kMaxTransitionsPerStep &&
-                (split_edges() || t1_shrinking_line()))
+                (split_edges() || transition_junction(true) || transition_junction(false)))
                 continue;
             e = watch_.check(c_, r_.steps);
             if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
             if (e->kind == "vanishing body" && pop(*e)) continue;
-            if (e->kind == "collapsing edge" && collapse_edges()) continue;
+            if (e->kind == "collapsing edge" &&
+                (collapse_edges() || transition_junction(true, true) ||
+                 transition_junction(false, true)))
+                continue;
             if (e->kind == "collapsing facet" && flip_edges()) continue;
             break;
         }
         if (e && !refused_.empty()) e->message += "; " + refused_;
+        if (!e && o_.transitions) remember_junctions();
         if (!e) {
             if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
             return false;
@@ -259,38 +274,85 @@ class Run {
         return true;
     }
 
-    /// A T1 on the shortest triple line between two quadruple points below min_line_fraction
-    /// of the mean edge; false if there is none or it cannot be made (then the reason is kept
-    /// for the message of the event that will follow, and the line is not tried again this
-    /// step).
-    bool t1_shrinking_line() {
-        if (c_.quadruple_points().size() < 2) return false; // no such line: skip the edge scan
+    /// The junctions a transition can act on, their cells as numbered at the start of the run.
+    std::vector<Junction> junctions(bool films) const {
+        std::vector<Junction> js = films ? triangular_films(c_) : quadruple_lines(c_);
+        for (Junction& j : js)
+            for (int& k : j.cells)
+                if (k >= 0) k = original_body_[k];
+        return js;
+    }
+
+    /// The sizes of the junctions after a step and its transitions, for the next step's look.
+    void remember_junctions() {
+        for (bool films : {false, true}) {
+            auto& memory = films ? film_sizes_ : line_sizes_;
+            memory.clear();
+            for (const Junction& j : junctions(films)) memory[j.cells] = j.size;
+        }
+    }
+
+    /// The junctions due for a transition, smallest first: lines shorter than `limit`
+    /// (films of perimeter below 3 limit) that have shrunk since the last look. A junction
+    /// that has just formed is not due (it is not in the memory), so a transition's product
+    /// must shrink before it is undone; with `force` (a collapsing edge the upkeep could not
+    /// remove) every small one is due.
+    std::vector<Junction> due(bool films, double limit, bool force) const {
+        const auto& memory = films ? film_sizes_ : line_sizes_;
+        std::vector<Junction> out;
+        for (Junction& j : junctions(films)) {
+            if (!(j.size < (films ? 3 : 1) * limit)) continue;
+            if (made_.count(j.cells)) continue; // a product of this step's transitions
+            const auto was = memory.find(j.cells);
+            if (force || (was != memory.end() && j.size < was->second))
+                out.push_back(std::move(j));
+        }
+        std::sort(out.begin(), out.end(),
+                  [](const Junction& x, const Junction& y) { return x.size < y.size; });
+        return out;
+    }
+
+    /// The cells of what a T1 or an inverse T1 makes of a junction: a line (A, B, C; D, E)
+    /// becomes a film (D, E; A, B, C) and back.
+    static std::vector<int> product_cells(const std::vector<int>& cells, bool film) {
+        const auto split = cells.begin() + (film ? 2 : 3);
+        std::vector<int> out(split, cells.end());
+        out.insert(out.end(), cells.begin(), split);
+        return out;
+    }
+
+    /// The first due junction whose transition can be made (triangular films collapse to
+    /// lines, lines open to films, each product at least twice the limit in size where the mesh
+    /// lets it be); false if none can (then the reasons are kept for the message of the event
+    /// that will follow).
+    bool transition_junction(bool films, bool force = false) {
+        if (c_.quadruple_points().size() < (films ? 3u : 2u)) return false;
         const double limit = o_.watch.min_line_fraction * mean_edge_length(c_);
-        std::vector<int> skip;
-        for (;;) {
-            const std::optional<int> line = shrinking_triple_line(c_, limit, skip);
-            if (!line) return false;
+        for (const Junction& j : due(films, limit, force)) {
             TransitionRecord record;
             try {
-                // the new film's edges must not be due for a T1 themselves
-                Cluster changed = t1_line_to_film(c_, *line, &record, 2 * limit);
+                Cluster changed = films ? t1_film_to_line(c_, j.id, &record, 2 * limit)
+                                        : t1_line_to_film(c_, j.id, &record, 2 * limit);
                 const double before = energy(c_), after = energy(changed);
                 TransitionEvent event{record.kind, record.where, c_.time(), r_.steps, -1, 0,
                                       before, after};
-                event.line = *line;
+                (films ? event.film : event.line) = j.id;
                 event.cells = record.cells;
                 for (int& k : event.cells)
                     if (k >= 0) k = original_body_[k];
                 r_.events.push_back(std::move(event));
                 replace_cluster(std::move(changed));
+                made_.insert(product_cells(j.cells, films));
                 return true;
             } catch (const TopologyError& x) {
                 std::string why = x.what();
-                if (why.rfind("t1: ", 0) == 0) why.erase(0, 4);
-                refused_ = "no T1 could be made: " + why;
-                skip.push_back(*line);
+                for (const char* op : {"t1: ", "t1_inverse: "})
+                    if (why.rfind(op, 0) == 0) why.erase(0, std::string(op).size());
+                refused_ = std::string(films ? "no inverse T1" : "no T1") +
+                           " could be made: " + why;
             }
         }
+        return false;
     }
 
     /// Mesh upkeep for a collapsing edge: the edges shorter than 2.5 min_edge_fraction of
@@ -406,7 +468,10 @@ class Run {
     double uncrossed_t_;
     const int n_start_bodies_ = c_.n_bodies();
     std::vector<int> original_body_; // the bodies' ids at the start of the run
-    std::string refused_;            // why a due T1 could not be made in this step
+    std::string refused_;            // why a due transition could not be made in this step
+    // the sizes of the junctions at the last look, by their cells (watch_for_topology)
+    std::map<std::vector<int>, double> line_sizes_, film_sizes_;
+    std::set<std::vector<int>> made_; // the cells of the junctions this step's transitions made
     const EdgeLengths edges_start_ = edge_lengths(c_); // the mesh size the upkeep keeps
     static constexpr int kMaxTransitionsPerStep = 64;
     bool written_last_ = true; // the state outputs hold the current state

@@ -77,7 +77,7 @@ struct EvolveOptions {
 
 /// A topological transition evolve made (EvolveOptions::transitions).
 struct TransitionEvent {
-    std::string kind;  ///< "pop body", "T1"
+    std::string kind;  ///< "pop body", "T1", "inverse T1"
     std::string where; ///< what and where, for people (TransitionRecord::where)
     double t = 0;      ///< the model time of the transition
     int step = 0;      ///< it followed this step of the run (1-based)
@@ -85,8 +85,9 @@ struct TransitionEvent {
     int neighbours = 0; ///< pop: the cells around it (the outside counts as one)
     double energy_before = 0, energy_after = 0;
     int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)
-    /// T1: the bodies the new film lies between, as numbered at the start of the run (-1: the
-    /// outside)
+    int film = -1;     ///< inverse T1: the film that became a line (0-based, its id before)
+    /// T1: the bodies the new film lies between; inverse T1: those the film lay between; as
+    /// numbered at the start of the run (-1: the outside)
     std::array<int, 2> cells{-1, -1};
 };
 

@@ -3,9 +3,11 @@
 #include "checks/self_intersection.h"
 #include "core/format.h"
 #include "geometry/geometry.h"
+#include "mesh/transitions.h"
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace froth {
 namespace {
@@ -25,10 +27,23 @@ std::optional<TopologyEvent> vanishing_body(const Cluster& c, double fraction) {
     return std::nullopt;
 }
 
+/// True if the edge v -> w is a whole triple line between two quadruple points.
+bool quadruple_line_edge(const Cluster& c, int v, int w) {
+    const auto& at_v = c.vertex_junction_edges(v);
+    if (at_v.size() != 4 || c.vertex_junction_edges(w).size() != 4) return false;
+    for (int e : at_v) {
+        const JunctionEdge& je = c.junction_edges()[e];
+        if (je.a == w || je.b == w) return true;
+    }
+    return false;
+}
+
 std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const WatchOptions& o) {
     const auto& X = c.positions();
+    // with transitions, a line between quadruple points is the T1's unless far shorter
+    const double line_factor = o.lines_to_transitions ? 0.1 : 1;
     // The facet angle furthest below its surface's limit, as angle / limit.
-    double sum = 0, shortest = INFINITY, angle_ratio = INFINITY, smallest_angle = 180;
+    double sum = 0, shortest = INFINITY, scaled_shortest = INFINITY, angle_ratio = INFINITY, smallest_angle = 180;
     long count = 0;
     int s_edge = 0, f_edge = 0, s_angle = 0, f_angle = 0;
     for (int i = 0; i < c.n_surfaces(); ++i) {
@@ -43,7 +58,12 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
                 const Vec3 w = x[(k + 2) % 3] - x[k];
                 const double len = u.norm();
                 sum += len, ++count;
-                if (len < shortest) shortest = len, s_edge = i, f_edge = f;
+                const double scaled =
+                    line_factor < 1 && quadruple_line_edge(c, tris[f][k], tris[f][(k + 1) % 3])
+                        ? len / line_factor
+                        : len;
+                if (scaled < scaled_shortest)
+                    scaled_shortest = scaled, shortest = len, s_edge = i, f_edge = f;
                 const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
                 if (angle / limit < angle_ratio)
                     angle_ratio = angle / limit, smallest_angle = angle, s_angle = i, f_angle = f;
@@ -53,7 +73,7 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
         return "facet " + std::to_string(f + 1) + " of surface " + std::to_string(s + 1);
     };
     const double mean = sum / count;
-    if (shortest < o.min_edge_fraction * mean)
+    if (scaled_shortest < o.min_edge_fraction * mean)
         return TopologyEvent{"collapsing edge",
                              "an edge of " + facet(s_edge, f_edge) + " is collapsing: length " +
                                  fmt(shortest) + ", mean edge " + fmt(mean) + at_time(c),
@@ -85,27 +105,85 @@ EdgeLengths edge_lengths(const Cluster& c) {
 
 double mean_edge_length(const Cluster& c) { return edge_lengths(c).mean; }
 
-std::optional<int> shrinking_triple_line(const Cluster& c, double limit,
-                                         const std::vector<int>& skip) {
-    if (c.quadruple_points().size() < 2) return std::nullopt;
+namespace {
+
+bool between_quadruple_points(const Cluster& c, const TripleLine& tl) {
     const auto quadruple = [&](int v) { return c.vertex_junction_edges(v).size() == 4; };
-    std::optional<int> shortest;
-    double best = limit;
+    return !tl.closed && tl.vertices.front() != tl.vertices.back() &&
+           quadruple(tl.vertices.front()) && quadruple(tl.vertices.back());
+}
+
+double line_length(const Cluster& c, const TripleLine& tl) {
+    double length = 0;
+    for (std::size_t i = 1; i < tl.vertices.size(); ++i) {
+        const int a = tl.vertices[i - 1], b = tl.vertices[i];
+        length += (c.position(b) - c.position(a) + c.edge_shift(a, b)).norm();
+    }
+    return length;
+}
+
+/// The cells of a triple line's films, sorted.
+std::vector<int> cells_around(const std::vector<std::array<int, 2>>& cells,
+                              const TripleLine& tl) {
+    std::set<int> around;
+    for (int s : tl.surfaces) around.insert(cells[s].begin(), cells[s].end());
+    return {around.begin(), around.end()};
+}
+
+/// The cell at quadruple point q that is not one of `around` (-2 if none or several).
+int fourth_cell(const Cluster& c, const std::vector<std::array<int, 2>>& cells, int q,
+                const std::vector<int>& around) {
+    std::set<int> at;
+    for (int k = c.pair_begin(q); k < c.pair_begin(q + 1); ++k)
+        for (int cell : cells[c.pair_surface(k)])
+            if (std::find(around.begin(), around.end(), cell) == around.end()) at.insert(cell);
+    return at.size() == 1 ? *at.begin() : -2;
+}
+
+} // namespace
+
+std::vector<Junction> quadruple_lines(const Cluster& c) {
+    std::vector<Junction> out;
+    if (c.quadruple_points().size() < 2) return out;
+    const auto cells = surface_cells(c);
     const auto& lines = c.triple_lines();
     for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
         const TripleLine& tl = lines[l];
-        if (tl.closed || tl.vertices.front() == tl.vertices.back() ||
-            !quadruple(tl.vertices.front()) || !quadruple(tl.vertices.back()))
-            continue;
-        if (std::find(skip.begin(), skip.end(), l) != skip.end()) continue;
-        double length = 0;
-        for (std::size_t i = 1; i < tl.vertices.size() && length < best; ++i) {
-            const int a = tl.vertices[i - 1], b = tl.vertices[i];
-            length += (c.position(b) - c.position(a) + c.edge_shift(a, b)).norm();
-        }
-        if (length < best) best = length, shortest = l;
+        if (!between_quadruple_points(c, tl)) continue;
+        Junction j{l, line_length(c, tl), cells_around(cells, tl)};
+        const int d = fourth_cell(c, cells, tl.vertices.front(), j.cells);
+        const int e = fourth_cell(c, cells, tl.vertices.back(), j.cells);
+        j.cells.push_back(std::min(d, e));
+        j.cells.push_back(std::max(d, e));
+        out.push_back(std::move(j));
     }
-    return shortest;
+    return out;
+}
+
+std::vector<Junction> triangular_films(const Cluster& c) {
+    std::vector<Junction> out;
+    if (c.quadruple_points().size() < 3) return out;
+    const auto cells = surface_cells(c);
+    std::vector<std::vector<int>> border(c.n_surfaces()); // each surface's triple lines
+    const auto& lines = c.triple_lines();
+    for (int l = 0; l < static_cast<int>(lines.size()); ++l)
+        for (int s : lines[l].surfaces) border[s].push_back(l);
+    for (int s = 0; s < c.n_surfaces(); ++s) {
+        if (border[s].size() != 3 || cells[s][0] == cells[s][1]) continue;
+        Junction j{s, 0, {std::min(cells[s][0], cells[s][1]), std::max(cells[s][0], cells[s][1])}};
+        std::set<int> sides;
+        bool ok = true;
+        for (int l : border[s]) {
+            ok = ok && between_quadruple_points(c, lines[l]);
+            j.size += line_length(c, lines[l]);
+            for (int cell : cells_around(cells, lines[l]))
+                if (cell != j.cells[0] && cell != j.cells[1]) sides.insert(cell);
+        }
+        if (!ok || sides.size() != 3) continue;
+        j.cells.insert(j.cells.end(), sides.begin(), sides.end());
+        out.push_back(std::move(j));
+    }
+    return out;
 }
 
 bool TopologyWatch::tests_crossings(int step) const {

@@ -18,6 +18,10 @@ struct WatchOptions {
     /// An edge shorter than this fraction of the mean edge length is collapsing (a neck or a
     /// shrinking film concentrates short edges; a uniformly shrinking cluster does not).
     double min_edge_fraction = 0.02;
+    /// Set by evolve with transitions: an edge that is a whole triple line between two
+    /// quadruple points collapses only below a tenth of that (a T1 is due long before; a line
+    /// an inverse T1 made in a finely meshed corner may start that short).
+    bool lines_to_transitions = false;
     /// A facet corner angle below this (degrees) means a facet is collapsing; on a surface
     /// with a nearly crystalline anisotropy (Anisotropy::nearly_crystalline) a tenth of it:
     /// there the schemes keep thin facets along the Wulff shape's edges (0.2-0.9 degrees in
@@ -26,7 +30,8 @@ struct WatchOptions {
     /// Test for crossing facets (CGAL) every this many steps; 0 never.
     int self_intersection_every = 10;
     /// A triple line between two quadruple points shorter than this fraction of the mean edge
-    /// length is shrinking to a point (shrinking_triple_line; evolve makes a T1 there).
+    /// length, or a triangular film of perimeter below three times that, is vanishing (evolve
+    /// makes a T1 or an inverse T1 there once it shrinks).
     double min_line_fraction = 0.2;
 };
 
@@ -44,10 +49,19 @@ struct EdgeLengths {
 EdgeLengths edge_lengths(const Cluster& c);
 double mean_edge_length(const Cluster& c); ///< edge_lengths(c).mean
 
-/// The shortest triple line between two distinct quadruple points that is shorter than
-/// `limit` (0-based id), if any; lines in `skip` are passed over.
-std::optional<int> shrinking_triple_line(const Cluster& c, double limit,
-                                         const std::vector<int>& skip = {});
+/// Where a T1 or an inverse T1 can act: a triple line between two distinct quadruple
+/// points, or a triangular film (bounded by three such lines, between two cells, with three
+/// other cells along its sides). The cells name it through transitions of other junctions,
+/// where its id changes.
+struct Junction {
+    int id = -1;       ///< the triple line's or the surface's (0-based)
+    double size = 0;   ///< the line's length, the film's perimeter
+    /// line: the three cells around it sorted, then the two at its ends sorted; film: its two
+    /// cells sorted, then the three of its sides sorted (body ids, -1 the outside)
+    std::vector<int> cells;
+};
+std::vector<Junction> quadruple_lines(const Cluster& c);
+std::vector<Junction> triangular_films(const Cluster& c);
 
 class TopologyWatch {
   public:

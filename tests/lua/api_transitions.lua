@@ -151,6 +151,41 @@ for b = 1, 5 do
 end
 T.assert_near(t1.energy_after, c:energy(), 1e-12, "energy_after")
 
+-- 4b. The inverse T1 (H -> I) undoes it: the new film, a triangle between the caps, becomes a
+-- triple line between the three wedges again, on the axis (the film's centre, its normal).
+local film = c:info().surfaces
+local before = c:energy()
+local inv = c:t1_inverse(film)
+T.assert_equal(inv.surface, film, "t1_inverse: which film")
+T.assert_true((inv.cells[1] == 4 and inv.cells[2] == 5) or (inv.cells[1] == 5 and inv.cells[2] == 4),
+              "the film lay between the caps", table.concat(inv.cells, ","))
+T.assert_equal(#c:triple_lines(), lines0, "three lines go, one comes")
+T.assert_equal(#c:quadruple_points(), quads0, "three quadruple points become two")
+T.assert_equal(c:info().surfaces, films0, "the film is gone")
+for b = 1, 5 do
+  T.assert_true(math.abs(c:volumes()[b] - V0[b]) < 0.02 * V0[b], "body " .. b .. " keeps its volume",
+                tostring(c:volumes()[b]))
+end
+T.assert_near(inv.energy_before, before, 1e-12, "energy_before")
+T.assert_near(inv.energy_after, c:energy(), 1e-12, "energy_after")
+local axis
+for i, tl in ipairs(c:triple_lines()) do
+  if #tl.vertices == 2 then
+    local a, b = c:vertex(tl.vertices[1]), c:vertex(tl.vertices[2])
+    if math.abs(a[1]) + math.abs(a[2]) + math.abs(b[1]) + math.abs(b[2]) < 1e-3 then axis = i end
+  end
+end
+T.assert_true(axis ~= nil, "the new line is on the axis, between the caps' sides")
+for _, q in ipairs(c:quadruple_points()) do
+  local at = c:edges{where = function(e) return e.triple_line and (e.vertices[1] == q or e.vertices[2] == q) end}
+  T.assert_equal(#at, 4, "quadruple point " .. q .. " meets four triple-line edges")
+end
+T.check_error("t1_inverse: surface 1 has 4 triple lines on its border, not three", c.t1_inverse, c, 1)
+local again = c:t1(axis) -- and the T1 once more: the cycle closes
+T.assert_equal(#c:triple_lines(), lines0 + 2, "T1 after the inverse: one line goes, three come")
+T.assert_true(again.energy_after < inv.energy_after, "the film has less energy than the line here",
+              ("%.9g -> %.9g"):format(inv.energy_after, again.energy_after))
+
 local blocked = band()
 local rb = blocked:evolve{flow = "sd", tau = 1e-3, T = 0.03, progress = false, transitions = false}
 T.assert_equal(rb.event and rb.event.kind, "collapsing edge", "without transitions the axis collapses")
@@ -259,6 +294,8 @@ local db = froth.double_bubble{h = 0.3}
 T.check_error("t1: triple line 1 is a closed loop", db.t1, db, 1)
 T.check_error("triple line 2 does not exist (the cluster has triple lines 1..1)", db.t1, db, 2)
 T.check_error("t1: the cluster has no triple lines", s.t1, s, 1)
+T.check_error("t1_inverse: surface 1 is bounded by the closed triple line 1", db.t1_inverse, db, 1)
+T.check_error("surface 4 does not exist (the cluster has surfaces 1..3)", db.t1_inverse, db, 4)
 local tb = froth.triple_bubble{h = 0.3}
 local X = T.positions(tb)
 T.check_error("the same cell (the outside) meets both its ends", tb.t1, tb, axis_line(tb))

@@ -1,0 +1,350 @@
+// The inverse T1 of 3D foams (transitions.h, t1_film_to_line): a small triangular film
+// collapses to a triple line (the H -> I transition; Evolver's pop_tri_to_edge).
+//
+// Before: the film F between cells D and E is bounded by three triple lines l_A, l_B, l_C
+// between the quadruple points q_AB, q_BC, q_CA, l_X with cells (D, E, X) and films F, D|X,
+// E|X; at q_XY the film X|Y starts, between the lines (D, X, Y) and (E, X, Y). After: a
+// line from a (cells A, B, C, D) to b (A, B, C, E) with the films A|B, B|C, C|A around it.
+// F goes; in D|X the vertices of l_X (its corners too) become a and its facets along l_X go,
+// in E|X they become b; the fan of X|Y at q_XY splits, the facets on the side of (D, X, Y)
+// take a, those on the side of (E, X, Y) take b, and a new facet (a, u, b) fills the gap,
+// its edge the new line's edge in X|Y. So a and b each have six films and four triple
+// lines: Plateau quadruple points. This is the T1 of t1.cpp run backwards.
+#include "mesh/transitions.h"
+
+#include "core/errors.h"
+#include "core/format.h"
+#include "mesh/transition_surgery.h"
+#include "mesh/walls.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace froth {
+namespace {
+
+std::string body_name(int k) {
+    return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
+}
+
+/// One side of the film: triple line l_X and the two other films along it.
+constexpr int kNoCell = -2; // -1 is the outside
+
+struct Side {
+    int line = -1;
+    int cell = kNoCell; ///< X
+    int film_d = -1; ///< D|X
+    int film_e = -1; ///< E|X
+    double length = 0;
+};
+
+class InverseT1 {
+  public:
+    InverseT1(const Cluster& c, int film, double min_length, double smallest_length)
+        : c_(c), film_(film), min_length_(min_length), smallest_length_(smallest_length),
+          name_("t1_inverse: surface " + std::to_string(film + 1)),
+          cells_(surface_cells(c)) {}
+
+    Cluster run(TransitionRecord* record);
+
+  private:
+    void check_film();
+    void find_sides();
+    Side side_of(int line) const;
+    void find_corner_films();
+    void unwrap_film();
+    int corner_towards(int q, int film, int w) const;
+    std::vector<Vec3> place_line(const ClusterSpec& spec);
+    void remove_film(ClusterSpec& spec) const;
+    Cluster finish(Cluster r) const;
+    std::string where() const;
+
+    const Cluster& c_;
+    const int film_;
+    const double min_length_, smallest_length_;
+    const std::string name_;
+    const std::vector<std::array<int, 2>> cells_;
+    int d_cell_ = -1, e_cell_ = -1;       // D, E
+    std::set<int> vertices_;              // F's vertices
+    std::vector<Side> sides_;
+    std::map<int, int> corner_film_;      // q_XY -> X|Y
+    std::map<int, Vec3> u_;               // F's vertices unwrapped, in one frame
+    std::map<int, Offset> d_;             // their lattice offsets in that frame
+    Vec3 centre_ = Vec3::Zero(), into_d_ = Vec3::Zero();
+    double length_ = 0;                   // the new line's
+    int n_ = 0;                           // c's vertex count: a is n_, b is n_ + 1
+    std::vector<surgery::MovedFacet> moved_;
+};
+
+void InverseT1::check_film() {
+    d_cell_ = cells_[film_][0];
+    e_cell_ = cells_[film_][1];
+    if (d_cell_ == e_cell_)
+        throw TopologyError(name_ + " lies between " + body_name(d_cell_) + " and itself; only "
+                            "a film between two cells can collapse to a line");
+    const Surface& s = c_.surface(film_);
+    std::set<std::pair<int, int>> edges;
+    for (const Tri& t : s.triangles)
+        for (int j = 0; j < 3; ++j) {
+            vertices_.insert(t[j]);
+            edges.insert(std::minmax(t[j], t[(j + 1) % 3]));
+        }
+    for (int v : vertices_)
+        if (c_.is_fixed(v) || c_.curve_point(v) || !c_.vertex_walls(v).empty())
+            throw TopologyError(name_ + " has a fixed vertex or one on a wall (" +
+                                std::to_string(v + 1) + "); it cannot change");
+    const long euler = static_cast<long>(vertices_.size()) - static_cast<long>(edges.size()) +
+                       static_cast<long>(s.triangles.size());
+    if (euler != 1)
+        throw TopologyError(name_ + " is not a disk (Euler characteristic " +
+                            std::to_string(euler) + ")");
+}
+
+Side InverseT1::side_of(int line) const {
+    const TripleLine& tl = c_.triple_lines()[line];
+    Side side;
+    side.line = line;
+    for (int s : tl.surfaces) {
+        if (s == film_) continue;
+        const auto& k = cells_[s];
+        const bool has_d = k[0] == d_cell_ || k[1] == d_cell_;
+        const bool has_e = k[0] == e_cell_ || k[1] == e_cell_;
+        if (has_d == has_e) continue; // neither or both: not a D|X or E|X film
+        (has_d ? side.film_d : side.film_e) = s;
+        const int x = k[0] == (has_d ? d_cell_ : e_cell_) ? k[1] : k[0];
+        if (side.cell != kNoCell && side.cell != x) side.film_d = side.film_e = -1;
+        side.cell = x;
+    }
+    if (side.film_d < 0 || side.film_e < 0 || side.cell == d_cell_ || side.cell == e_cell_)
+        throw TopologyError(name_ + ": triple line " + std::to_string(line + 1) + " on its "
+                            "border does not join it to the films of one third cell with " +
+                            body_name(d_cell_) + " and " + body_name(e_cell_));
+    return side;
+}
+
+/// The three lines around F, each open, between quadruple points, three corners in all.
+void InverseT1::find_sides() {
+    const auto& lines = c_.triple_lines();
+    for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
+        const auto& fs = lines[l].surfaces;
+        if (std::find(fs.begin(), fs.end(), film_) == fs.end()) continue;
+        if (lines[l].closed)
+            throw TopologyError(name_ + " is bounded by the closed triple line " +
+                                std::to_string(l + 1) + "; only a triangle of three lines "
+                                "between quadruple points collapses");
+        sides_.push_back(side_of(l));
+    }
+    if (sides_.size() != 3)
+        throw TopologyError(name_ + " has " + std::to_string(sides_.size()) + " triple lines "
+                            "on its border, not three; only a triangular film collapses");
+    std::map<int, int> ends;
+    std::set<int> cells;
+    for (const Side& side : sides_) {
+        const auto& v = lines[side.line].vertices;
+        ++ends[v.front()];
+        ++ends[v.back()];
+        cells.insert(side.cell);
+    }
+    for (const auto& [q, count] : ends)
+        if (count != 2 || c_.vertex_junction_edges(q).size() != 4)
+            throw TopologyError(name_ + ": its border's corner at vertex " +
+                                std::to_string(q + 1) + " is not a quadruple point where two "
+                                "of its lines meet");
+    if (ends.size() != 3 || cells.size() != 3)
+        throw TopologyError(name_ + ": the cells around its border are not three distinct "
+                            "ones besides " + body_name(d_cell_) + " and " + body_name(e_cell_));
+}
+
+/// At each corner q_XY, the one film there that is neither F nor a side's: X|Y.
+void InverseT1::find_corner_films() {
+    std::set<int> side_films{film_};
+    for (const Side& side : sides_) side_films.insert({side.film_d, side.film_e});
+    for (const Side& side : sides_) {
+        const auto& v = c_.triple_lines()[side.line].vertices;
+        for (int q : {v.front(), v.back()}) {
+            if (corner_film_.count(q)) continue;
+            std::vector<int> others;
+            for (int s : surgery::surfaces_at(c_, q))
+                if (!side_films.count(s)) others.push_back(s);
+            if (others.size() != 1)
+                throw TopologyError(name_ + ": its corner at vertex " + std::to_string(q + 1) +
+                                    " has " + std::to_string(others.size()) + " films besides "
+                                    "its own and its sides', not one");
+            corner_film_[q] = others.front();
+        }
+    }
+}
+
+/// F's vertices in one frame (through its edges' lattice shifts), its centre and the unit
+/// normal into D, the sides' lengths.
+void InverseT1::unwrap_film() {
+    const Surface& s = c_.surface(film_);
+    std::map<int, std::vector<int>> next;
+    for (const Tri& t : s.triangles)
+        for (int j = 0; j < 3; ++j) next[t[j]].push_back(t[(j + 1) % 3]);
+    std::vector<int> queue{*vertices_.begin()};
+    u_[queue[0]] = c_.position(queue[0]);
+    for (std::size_t i = 0; i < queue.size(); ++i) {
+        const int v = queue[i];
+        for (int w : next[v]) {
+            if (u_.count(w)) continue;
+            u_[w] = u_[v] + (c_.position(w) - c_.position(v) + c_.edge_shift(v, w));
+            queue.push_back(w);
+        }
+    }
+    if (u_.size() != vertices_.size())
+        throw TopologyError(name_ + " is not connected");
+    for (const auto& [v, u] : u_) d_[v] = surgery::lattice_offset(c_, u, c_.position(v));
+
+    Vec3 area = Vec3::Zero();
+    double total = 0;
+    for (const Tri& t : s.triangles) {
+        const Vec3 n = 0.5 * (u_[t[1]] - u_[t[0]]).cross(u_[t[2]] - u_[t[0]]);
+        area += n;
+        total += n.norm();
+        centre_ += n.norm() * (u_[t[0]] + u_[t[1]] + u_[t[2]]) / 3.0;
+    }
+    if (!(area.norm() > 0)) throw TopologyError(name_ + " has no area");
+    centre_ /= total;
+    // sign +1: the surface's normal points out of the body
+    int out_of_d = 0;
+    for (int k : {d_cell_, e_cell_}) {
+        if (k < 0) continue;
+        for (const BodyFace& f : c_.bodies()[k].faces)
+            if (f.surface == film_) out_of_d = k == d_cell_ ? f.sign : -f.sign;
+    }
+    into_d_ = -out_of_d * area.normalized();
+    for (Side& side : sides_) {
+        const auto& v = c_.triple_lines()[side.line].vertices;
+        for (std::size_t i = 1; i < v.size(); ++i) side.length += (u_[v[i]] - u_[v[i - 1]]).norm();
+    }
+}
+
+/// In X|Y at corner q, the new corner its fan takes towards w: a on the side of the line
+/// (D, X, Y), b on that of (E, X, Y).
+int InverseT1::corner_towards(int q, int film, int w) const {
+    for (int e : c_.vertex_junction_edges(q)) {
+        const JunctionEdge& je = c_.junction_edges()[e];
+        if (je.a != w && je.b != w) continue;
+        for (int s : je.surfaces) {
+            if (s == film) continue;
+            const auto& k = cells_[s];
+            if (k[0] == d_cell_ || k[1] == d_cell_) return n_;
+            if (k[0] == e_cell_ || k[1] == e_cell_) return n_ + 1;
+        }
+    }
+    throw TopologyError(name_ + ": surface " + std::to_string(film + 1) + " does not end on "
+                        "the lines of the corner at vertex " + std::to_string(q + 1));
+}
+
+/// The positions after the collapse: c's, then a and b on the normal through F's centre,
+/// length_ apart, length_ from the sides' mean length (or min_length) halved while a facet
+/// would turn over, at most ten times and not below smallest_length.
+std::vector<Vec3> InverseT1::place_line(const ClusterSpec& spec) {
+    double mean = 0;
+    for (const Side& side : sides_) mean += side.length / 3;
+    int turned = -1;
+    double length = std::max(mean, min_length_);
+    for (int halvings = 0; halvings <= 10; ++halvings, length *= 0.5) {
+        std::vector<Vec3> V = c_.positions();
+        V.push_back(centre_ + 0.5 * length * into_d_);
+        V.push_back(centre_ - 0.5 * length * into_d_);
+        if (!surgery::turns_a_facet(spec, V, moved_, &turned)) {
+            length_ = length;
+            return V;
+        }
+        if (0.5 * length < smallest_length_) break;
+    }
+    throw TopologyError(name_ + ": its collapse would turn a facet of surface " +
+                        std::to_string(turned + 1) + " over; the mesh around it is too fine "
+                        "or too coarse for it");
+}
+
+/// F goes from the surfaces and the bodies; the surfaces after it move down one id.
+void InverseT1::remove_film(ClusterSpec& spec) const {
+    spec.surfaces.erase(spec.surfaces.begin() + film_);
+    for (auto& body : spec.bodies) {
+        std::vector<int> kept;
+        for (int s : body)
+            if (s != film_) kept.push_back(s > film_ ? s - 1 : s);
+        body = std::move(kept);
+    }
+}
+
+/// The materials of the kept surfaces, the time and the bodies' volumes go over to r.
+Cluster InverseT1::finish(Cluster r) const {
+    for (int s = 0; s < r.n_surfaces(); ++s) {
+        const int old = s < film_ ? s : s + 1;
+        r.set_anisotropy(s, c_.surface(old).gamma);
+        r.set_mobility(s, c_.surface(old).beta);
+    }
+    r.set_time(c_.time());
+    r.set_volume_references(c_.initial_volumes(), c_.target_volumes());
+    return r;
+}
+
+std::string InverseT1::where() const {
+    std::string lines, cells;
+    for (const Side& side : sides_) {
+        lines += (lines.empty() ? "" : ", ") + std::to_string(side.line + 1) + " (" +
+                 fmt(side.length) + ")";
+        cells += (cells.empty() ? "" : side.line == sides_.back().line ? " and " : ", ") +
+                 body_name(side.cell);
+    }
+    return "triangular film " + std::to_string(film_ + 1) + " between " + body_name(d_cell_) +
+           " and " + body_name(e_cell_) + " (triple lines " + lines + ") became a triple "
+           "line of length " + fmt(length_) + " between " + cells + " at " +
+           point_text(centre_);
+}
+
+Cluster InverseT1::run(TransitionRecord* record) {
+    check_film();
+    find_sides();
+    find_corner_films();
+    unwrap_film();
+    n_ = c_.n_vertices();
+
+    ClusterSpec spec = cluster_spec(c_);
+    for (const Side& side : sides_) {
+        std::map<int, Offset> on_line;
+        for (int v : c_.triple_lines()[side.line].vertices) on_line[v] = d_.at(v);
+        surgery::collapse_onto(c_, spec, side.film_d, on_line, n_, moved_, name_);
+        surgery::collapse_onto(c_, spec, side.film_e, on_line, n_ + 1, moved_, name_);
+    }
+    for (const auto& [q, film] : corner_film_) {
+        const auto towards = [&, q = q, film = film](int w) { return corner_towards(q, film, w); };
+        surgery::split_fan(c_, spec, film, q, d_.at(q), towards, moved_, name_);
+    }
+    std::vector<Vec3> V = place_line(spec);
+    remove_film(spec);
+    const std::vector<int> used = surgery::keep_used_vertices(spec, V);
+    surgery::copy_vertex_lists(c_, [&](int v) { return used[v]; }, spec);
+    Cluster r = finish(surgery::rebuild(std::move(spec), name_, "its collapse"));
+    for (int p : {n_, n_ + 1})
+        if (r.vertex_junction_edges(used[p]).size() != 4)
+            throw TopologyError(name_ + ": an end of the new line is not a quadruple point; "
+                                "refine the mesh around the film first");
+    if (record) {
+        record->kind = "inverse T1";
+        record->film = film_;
+        record->cells = {d_cell_, e_cell_};
+        record->point = centre_;
+        record->removed_vertices = c_.n_vertices() + 2 - r.n_vertices();
+        record->removed_facets = c_.n_facets() + 3 - r.n_facets(); // a gap facet per corner
+        record->where = where();
+    }
+    return r;
+}
+
+} // namespace
+
+Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record,
+                        double min_length, double smallest_length) {
+    if (surface < 0 || surface >= c.n_surfaces())
+        throw InvalidInput("t1_inverse: surface " + std::to_string(surface + 1) + " does not "
+                           "exist (the cluster has " + std::to_string(c.n_surfaces()) + ")");
+    return InverseT1(c, surface, min_length, smallest_length).run(record);
+}
+
+} // namespace froth

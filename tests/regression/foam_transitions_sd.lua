@@ -1,0 +1,57 @@
+-- Regression: surface diffusion of a 64-cell periodic Voronoi foam, minimised first. The foam
+-- has small triangular films and short triple lines (the Voronoi diagram's, the minimisation
+-- shrinks them further); without transitions the run stops on its first step, with them the
+-- shrinking triangles collapse to lines (inverse T1) and the shrinking lines open to films
+-- (T1), and the run goes on. Each transition is local: the energy changes by a small fraction,
+-- the cells fill the box, and every Plateau point keeps its four lines.
+local T = require("froth.test")
+
+local start = froth.foam{n = 64, seed = 1, h = 0.4, lloyd = 20}
+local m = start:minimize{max_iterations = 200}
+print(("minimize: %s after %d iterations, energy %.9g"):format(m.stop_reason, m.iterations,
+                                                               start:energy()))
+
+local steps = 4
+local blocked = start:clone()
+local rb = blocked:evolve{flow = "sd", tau = 1e-4, steps = steps, progress = false,
+                          transitions = false}
+print("without transitions: " .. rb.stop_reason)
+T.assert_true(rb.steps < steps and rb.event ~= nil, "without transitions the run stops",
+              rb.stop_reason)
+
+local c = start:clone()
+local box = 0
+for _, v in ipairs(c:volumes()) do box = box + v end
+local r = c:evolve{flow = "sd", tau = 1e-4, steps = steps, progress = false}
+local count = {}
+for _, e in ipairs(r.events) do
+  count[e.kind] = (count[e.kind] or 0) + 1
+  print(("step %d %-10s %s: energy %.9g -> %.9g"):format(e.step, e.kind, e.where,
+                                                           e.energy_before, e.energy_after))
+  T.assert_true(math.abs(e.energy_after - e.energy_before) < 1e-4 * e.energy_before,
+                "a transition changes the energy by little", e.where)
+end
+print(("with transitions: %s, %d steps, %d inverse T1s, %d T1s, %d edges collapsed, %d split"):format(
+  r.stop_reason, r.steps, count["inverse T1"] or 0, count["T1"] or 0, r.collapsed_edges, r.split_edges))
+T.assert_equal(r.steps, steps, "with transitions all steps are taken", r.stop_reason)
+T.assert_true((count["inverse T1"] or 0) >= 3, "the small triangles collapse",
+              tostring(count["inverse T1"]))
+T.assert_true((count["T1"] or 0) >= 1, "a shrinking line opens", tostring(count["T1"]))
+T.assert_equal(#r.events, (count["inverse T1"] or 0) + (count["T1"] or 0), "no other events")
+local filled = 0
+for _, v in ipairs(c:volumes()) do filled = filled + v end
+T.assert_near(filled, box, 1e-9 * box, "the cells fill the box")
+for b, v in ipairs(c:volumes()) do
+  T.assert_true(math.abs(v - c:target_volumes()[b]) < 1e-2 * c:target_volumes()[b],
+                "body " .. b .. " keeps its volume", tostring(v))
+end
+local inverse = (count["inverse T1"] or 0) - (count["T1"] or 0)
+T.assert_equal(#c:quadruple_points(), #start:quadruple_points() - inverse,
+               "an inverse T1 takes one quadruple point, a T1 gives one")
+for _, q in ipairs(c:quadruple_points()) do
+  local at = c:edges{where = function(e)
+    return e.triple_line and (e.vertices[1] == q or e.vertices[2] == q)
+  end}
+  T.assert_equal(#at, 4, "quadruple point " .. q .. " meets four triple-line edges")
+end
+T.summary()
