@@ -193,6 +193,8 @@ class Minimizer {
         EngineLoopScope loop;
         MinimizeResult r;
         int rejects_in_row = 0;
+        // a mesh that starts with small angles (after transitions) stops only once they halve
+        const double start_angle = min_facet_angle(c_.positions());
         for (;;) {
             const PositionBasis P(c_);
             const PairGeometry g = pair_geometry(c_);
@@ -229,7 +231,7 @@ class Minimizer {
                     break;
                 }
                 const double angle = min_facet_angle(c_.positions());
-                if (angle < kDegenerateAngle) {
+                if (angle < std::min(kDegenerateAngle, 0.5 * start_angle)) {
                     r.stop_reason = "topology: a facet angle fell to " + fmt(angle) +
                                     " degrees (a film or triple line is collapsing: the "
                                     "energy goes down by a change of topology, e.g. a pinch-off)";
@@ -313,6 +315,15 @@ class Minimizer {
             if (!fresh) steps_on_factor_ = kReuse, tau_ *= 8; // retry at once, freshly factored
             return false;
         }
+        // A step that would collapse a facet is retried smaller a few times (the caller divides
+        // tau by 8): the first steps after a topological transition are too long for the small
+        // facets beside it. A collapse that outlasts the retries is a change of topology.
+        if (angle_retries_ < kAngleRetries &&
+            min_facet_angle(X) < std::min(kDegenerateAngle, 0.5 * min_facet_angle(c_.positions()))) {
+            ++angle_retries_;
+            return false;
+        }
+        angle_retries_ = 0;
         c_.set_positions(std::move(X));
         return true;
     }
@@ -374,8 +385,10 @@ class Minimizer {
     static constexpr double kAngleKept = 0.5;
     /// Below this smallest facet angle (degrees) minimize stops: the mesh is collapsing.
     static constexpr double kDegenerateAngle = 1.0;
+    static constexpr int kAngleRetries = 3;
     double initial_area_ = 0;
     int steps_on_factor_ = 0;
+    int angle_retries_ = 0; // steps in a row refused for collapsing a facet
     bool has_factor_ = false;
     Cluster& c_;
     const MinimizeOptions& o_;
