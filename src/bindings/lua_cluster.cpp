@@ -413,34 +413,6 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     return e;
 }
 
-/// evolve's `events`: {{kind, where, t, step, energy_before, energy_after; pops: body,
-/// neighbours; T1s: line, cells; inverse T1s: surface, cells}, ...}
-void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& events) {
-    lua_createtable(L, static_cast<int>(events.size()), 0);
-    for (std::size_t i = 0; i < events.size(); ++i) {
-        const TransitionEvent& e = events[i];
-        lua_createtable(L, 0, 8);
-        lua_pushstring(L, e.kind.c_str());
-        lua_setfield(L, -2, "kind");
-        lua_pushstring(L, e.where.c_str());
-        lua_setfield(L, -2, "where");
-        set_number(L, "t", e.t);
-        set_integer(L, "step", e.step);
-        if (e.body >= 0) {
-            set_integer(L, "body", e.body + 1);
-            set_integer(L, "neighbours", e.neighbours);
-        }
-        if (e.line >= 0 || e.film >= 0) {
-            if (e.line >= 0) set_integer(L, "line", e.line + 1);
-            if (e.film >= 0) set_integer(L, "surface", e.film + 1);
-            push_integers(L, std::vector<int>{e.cells[0] + 1, e.cells[1] + 1});
-            lua_setfield(L, -2, "cells");
-        }
-        set_number(L, "energy_before", e.energy_before);
-        set_number(L, "energy_after", e.energy_after);
-        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-    }
-}
 
 int l_evolve(lua_State* L) {
     ClusterHandle& h = self(L);
@@ -550,6 +522,35 @@ const luaL_Reg methods[] = {
 };
 
 } // namespace
+
+/// evolve's `events`: {{kind, where, t, step, energy_before, energy_after; pops: body,
+/// neighbours; T1s: line, cells; inverse T1s: surface, cells}, ...}
+void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& events) {
+    lua_createtable(L, static_cast<int>(events.size()), 0);
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const TransitionEvent& e = events[i];
+        lua_createtable(L, 0, 8);
+        lua_pushstring(L, e.kind.c_str());
+        lua_setfield(L, -2, "kind");
+        lua_pushstring(L, e.where.c_str());
+        lua_setfield(L, -2, "where");
+        set_number(L, "t", e.t);
+        set_integer(L, "step", e.step);
+        if (e.body >= 0) {
+            set_integer(L, "body", e.body + 1);
+            set_integer(L, "neighbours", e.neighbours);
+        }
+        if (e.line >= 0 || e.film >= 0) {
+            if (e.line >= 0) set_integer(L, "line", e.line + 1);
+            if (e.film >= 0) set_integer(L, "surface", e.film + 1);
+            push_integers(L, std::vector<int>{e.cells[0] + 1, e.cells[1] + 1});
+            lua_setfield(L, -2, "cells");
+        }
+        set_number(L, "energy_before", e.energy_before);
+        set_number(L, "energy_after", e.energy_after);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+    }
+}
 
 /// Sets t[key] = {min, max, mean, count[, young_error, force_imbalance]}; no angles (nil, not zeros) when
 /// there is nothing to measure.

@@ -3,6 +3,9 @@
 /// cluster's sparsity patterns and symbolic factorisations).
 
 #include "flows/stepper.h"
+#include "run/junction_transitions.h"
+
+#include <vector>
 
 struct lua_State;
 
@@ -24,6 +27,9 @@ struct ClusterHandle {
 };
 
 inline constexpr const char* kClusterType = "froth.Cluster";
+
+/// Pushes a run's transitions as the list evolve and minimize return as `events`.
+void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& events);
 
 /// The froth.Cluster in argument idx (a Lua error if it is not one or was destroyed).
 ClusterHandle& check_cluster(lua_State* L, int idx);

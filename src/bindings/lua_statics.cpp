@@ -4,6 +4,7 @@
 #include "bindings/lua_cluster.h"
 #include "bindings/luax.h"
 #include "flows/minimize.h"
+#include "run/minimize_transitions.h"
 #include "mesh/transitions.h"
 
 #include <algorithm>
@@ -14,36 +15,59 @@ namespace {
 
 ClusterHandle& self(lua_State* L) { return check_cluster(L, 1); }
 
-/// c:minimize{tol, max_iterations, tau_start, tau_growth, tau_max, volume_tol}
+/// minimize's result table; with transitions also rounds, events and the upkeep counts.
+void push_minimize_result(lua_State* L, const MinimizeResult& r,
+                          const TransitionMinimizeResult* t) {
+    lua_createtable(L, 0, 14);
+    set_number(L, "energy", r.energy);
+    push_numbers(L, r.volumes);
+    lua_setfield(L, -2, "volumes");
+    push_numbers(L, r.pressures);
+    lua_setfield(L, -2, "pressures");
+    set_number(L, "residual", r.residual);
+    set_number(L, "volume_error", r.volume_error);
+    set_integer(L, "iterations", r.iterations);
+    set_integer(L, "rejected", r.rejected);
+    set_number(L, "wall_s", r.wall_seconds);
+    lua_pushboolean(L, r.converged);
+    lua_setfield(L, -2, "converged");
+    lua_pushstring(L, r.stop_reason.c_str());
+    lua_setfield(L, -2, "stop_reason");
+    if (!t) return;
+    set_integer(L, "rounds", t->rounds);
+    set_integer(L, "collapsed_edges", t->collapsed_edges);
+    set_integer(L, "flipped_edges", t->flipped_edges);
+    push_transition_events(L, t->events);
+    lua_setfield(L, -2, "events");
+}
+
+/// c:minimize{tol, max_iterations, tau_start, tau_growth, tau_max, volume_tol, transitions,
+/// min_line_fraction}
 int l_minimize(lua_State* L) {
     ClusterHandle& h = self(L);
     ChangeGuard change(L, h, "minimize");
     Options o(L, 2, "minimize", true);
-    MinimizeOptions m;
+    TransitionMinimizeOptions t;
+    MinimizeOptions& m = t.minimize;
     m.tol = o.number("tol", m.tol);
     m.max_iterations = static_cast<int>(o.integer("max_iterations", m.max_iterations));
     m.tau_start = o.number("tau_start", m.tau_start);
     m.tau_growth = o.number("tau_growth", m.tau_growth);
     m.tau_max = o.number("tau_max", m.tau_max);
     m.volume_tol = o.number("volume_tol", m.volume_tol);
+    const bool transitions = o.boolean("transitions", false);
+    t.min_line_fraction = o.number("min_line_fraction", t.min_line_fraction);
+    if (!(t.min_line_fraction > 0 && t.min_line_fraction < 1))
+        o.error("min_line_fraction", "must lie in (0, 1)");
     o.finish();
     return guarded(L, [&] {
-        const MinimizeResult r = minimize(h.cluster, m);
-        lua_createtable(L, 0, 10);
-        set_number(L, "energy", r.energy);
-        push_numbers(L, r.volumes);
-        lua_setfield(L, -2, "volumes");
-        push_numbers(L, r.pressures);
-        lua_setfield(L, -2, "pressures");
-        set_number(L, "residual", r.residual);
-        set_number(L, "volume_error", r.volume_error);
-        set_integer(L, "iterations", r.iterations);
-        set_integer(L, "rejected", r.rejected);
-        set_number(L, "wall_s", r.wall_seconds);
-        lua_pushboolean(L, r.converged);
-        lua_setfield(L, -2, "converged");
-        lua_pushstring(L, r.stop_reason.c_str());
-        lua_setfield(L, -2, "stop_reason");
+        if (!transitions) {
+            push_minimize_result(L, minimize(h.cluster, m), nullptr);
+            return 1;
+        }
+        h.stepper.reset(); // transitions change the mesh
+        const TransitionMinimizeResult r = minimize_with_transitions(h.cluster, t);
+        push_minimize_result(L, r.result, &r);
         return 1;
     });
 }

@@ -7,15 +7,14 @@
 #include "io/state_file.h"
 #include "io/vtk_writer.h"
 #include "mesh/transitions.h"
+#include "run/junction_transitions.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cmath>
-#include <map>
 #include <memory>
 #include <optional>
-#include <set>
 
 namespace froth {
 namespace {
@@ -90,7 +89,7 @@ class Run {
         }
         if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper);
         write_frame(); // the start, so a bad path fails before any step
-        if (o.transitions) remember_junctions();
+        if (o.transitions) junctions_.remember(c_, original_body_);
     }
 
     /// Takes one step and everything that follows it; false ends the run.
@@ -240,8 +239,7 @@ class Run {
     /// made first, each followed by a new look.
     bool watch_for_topology() {
         std::optional<TopologyEvent> e;
-        refused_.clear();
-        made_.clear();
+        junctions_.new_look();
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
             if (o_.transitions && made < kMaxTransitionsPerStep &&
@@ -257,8 +255,8 @@ class Run {
             if (e->kind == "collapsing facet" && flip_edges()) continue;
             break;
         }
-        if (e && !refused_.empty()) e->message += "; " + refused_;
-        if (!e && o_.transitions) remember_junctions();
+        if (e && !junctions_.refused().empty()) e->message += "; " + junctions_.refused();
+        if (!e && o_.transitions) junctions_.remember(c_, original_body_);
         if (!e) {
             if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
             return false;
@@ -274,85 +272,16 @@ class Run {
         return true;
     }
 
-    /// The junctions a transition can act on, their cells as numbered at the start of the run.
-    std::vector<Junction> junctions(bool films) const {
-        std::vector<Junction> js = films ? triangular_films(c_) : quadruple_lines(c_);
-        for (Junction& j : js)
-            for (int& k : j.cells)
-                if (k >= 0) k = original_body_[k];
-        return js;
-    }
-
-    /// The sizes of the junctions after a step and its transitions, for the next step's look.
-    void remember_junctions() {
-        for (bool films : {false, true}) {
-            auto& memory = films ? film_sizes_ : line_sizes_;
-            memory.clear();
-            for (const Junction& j : junctions(films)) memory[j.cells] = j.size;
-        }
-    }
-
-    /// The junctions due for a transition, smallest first: lines shorter than `limit`
-    /// (films of perimeter below 3 limit) that have shrunk since the last look. A junction
-    /// that has just formed is not due (it is not in the memory), so a transition's product
-    /// must shrink before it is undone; with `force` (a collapsing edge the upkeep could not
-    /// remove) every small one is due.
-    std::vector<Junction> due(bool films, double limit, bool force) const {
-        const auto& memory = films ? film_sizes_ : line_sizes_;
-        std::vector<Junction> out;
-        for (Junction& j : junctions(films)) {
-            if (!(j.size < (films ? 3 : 1) * limit)) continue;
-            if (made_.count(j.cells)) continue; // a product of this step's transitions
-            const auto was = memory.find(j.cells);
-            if (force || (was != memory.end() && j.size < was->second))
-                out.push_back(std::move(j));
-        }
-        std::sort(out.begin(), out.end(),
-                  [](const Junction& x, const Junction& y) { return x.size < y.size; });
-        return out;
-    }
-
-    /// The cells of what a T1 or an inverse T1 makes of a junction: a line (A, B, C; D, E)
-    /// becomes a film (D, E; A, B, C) and back.
-    static std::vector<int> product_cells(const std::vector<int>& cells, bool film) {
-        const auto split = cells.begin() + (film ? 2 : 3);
-        std::vector<int> out(split, cells.end());
-        out.insert(out.end(), cells.begin(), split);
-        return out;
-    }
-
-    /// The first due junction whose transition can be made (triangular films collapse to
-    /// lines, lines open to films, each product at least twice the limit in size where the mesh
-    /// lets it be); false if none can (then the reasons are kept for the message of the event
-    /// that will follow).
+    /// The first due junction whose transition can be made (run/junction_transitions.h):
+    /// triangular films with `films`, else lines; false if none can.
     bool transition_junction(bool films, bool force = false) {
-        if (c_.quadruple_points().size() < (films ? 3u : 2u)) return false;
-        const double limit = o_.watch.min_line_fraction * mean_edge_length(c_);
-        for (const Junction& j : due(films, limit, force)) {
-            TransitionRecord record;
-            try {
-                Cluster changed = films ? t1_film_to_line(c_, j.id, &record, 2 * limit)
-                                        : t1_line_to_film(c_, j.id, &record, 2 * limit);
-                const double before = energy(c_), after = energy(changed);
-                TransitionEvent event{record.kind, record.where, c_.time(), r_.steps, -1, 0,
-                                      before, after};
-                (films ? event.film : event.line) = j.id;
-                event.cells = record.cells;
-                for (int& k : event.cells)
-                    if (k >= 0) k = original_body_[k];
-                r_.events.push_back(std::move(event));
-                replace_cluster(std::move(changed));
-                made_.insert(product_cells(j.cells, films));
-                return true;
-            } catch (const TopologyError& x) {
-                std::string why = x.what();
-                for (const char* op : {"t1: ", "t1_inverse: "})
-                    if (why.rfind(op, 0) == 0) why.erase(0, std::string(op).size());
-                refused_ = std::string(films ? "no inverse T1" : "no T1") +
-                           " could be made: " + why;
-            }
-        }
-        return false;
+        TransitionEvent event;
+        std::optional<Cluster> changed = junctions_.make(c_, films, force, original_body_, event);
+        if (!changed) return false;
+        event.step = r_.steps;
+        r_.events.push_back(std::move(event));
+        replace_cluster(std::move(*changed));
+        return true;
     }
 
     /// Mesh upkeep for a collapsing edge: the edges shorter than 2.5 min_edge_fraction of
@@ -468,10 +397,7 @@ class Run {
     double uncrossed_t_;
     const int n_start_bodies_ = c_.n_bodies();
     std::vector<int> original_body_; // the bodies' ids at the start of the run
-    std::string refused_;            // why a due transition could not be made in this step
-    // the sizes of the junctions at the last look, by their cells (watch_for_topology)
-    std::map<std::vector<int>, double> line_sizes_, film_sizes_;
-    std::set<std::vector<int>> made_; // the cells of the junctions this step's transitions made
+    JunctionTransitions junctions_{o_.watch.min_line_fraction};
     const EdgeLengths edges_start_ = edge_lengths(c_); // the mesh size the upkeep keeps
     static constexpr int kMaxTransitionsPerStep = 64;
     bool written_last_ = true; // the state outputs hold the current state

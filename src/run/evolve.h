@@ -4,6 +4,7 @@
 
 #include "flows/stepper.h"
 #include "render/snapshot.h"
+#include "run/junction_transitions.h"
 #include "run/topology_watch.h"
 
 #include <array>
@@ -73,22 +74,6 @@ struct EvolveOptions {
     /// The order in time of the steps, 1 or 2 (TimeStepper::set_order; the first step of
     /// order 2 is of order 1).
     int order = 1;
-};
-
-/// A topological transition evolve made (EvolveOptions::transitions).
-struct TransitionEvent {
-    std::string kind;  ///< "pop body", "T1", "inverse T1"
-    std::string where; ///< what and where, for people (TransitionRecord::where)
-    double t = 0;      ///< the model time of the transition
-    int step = 0;      ///< it followed this step of the run (1-based)
-    int body = -1;     ///< pop: the body that went, as numbered at the start of the run (0-based)
-    int neighbours = 0; ///< pop: the cells around it (the outside counts as one)
-    double energy_before = 0, energy_after = 0;
-    int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)
-    int film = -1;     ///< inverse T1: the film that became a line (0-based, its id before)
-    /// T1: the bodies the new film lies between; inverse T1: those the film lay between; as
-    /// numbered at the start of the run (-1: the outside)
-    std::array<int, 2> cells{-1, -1};
 };
 
 struct EvolveResult {

@@ -174,4 +174,15 @@ sl:set_vertex(v, {xw[1] + 0.015 * (xv[1] - xw[1]), xw[2] + 0.015 * (xv[2] - xw[2
 local rs = sl:minimize{}
 T.assert_equal(rs.stop_reason, "converged", "a sliver at the start does not stop minimize",
                rs.stop_reason)
+
+-- With transitions, a cluster that needs none minimises as without: one round, no events.
+local plain, with = froth.double_bubble{h = 0.25}, froth.double_bubble{h = 0.25}
+local rp, rw = plain:minimize{}, with:minimize{transitions = true}
+T.assert_equal(rw.rounds, 1, "one round")
+T.assert_equal(#rw.events, 0, "no transitions")
+T.assert_equal(rw.iterations, rp.iterations, "the same iterations")
+T.assert_near(rw.energy, rp.energy, 1e-14 * rp.energy, "the same energy")
+T.assert_equal(rp.events, nil, "without transitions no events field")
+T.check_error("minimize: option 'min_line_fraction' must lie in (0, 1)", with.minimize, with,
+              {transitions = true, min_line_fraction = 2})
 T.summary()

@@ -1,4 +1,4 @@
--- Regression: surface diffusion of a 64-cell periodic Voronoi foam, minimised first. The foam
+-- Regression: minimize and surface diffusion of a 64-cell periodic Voronoi foam. The foam
 -- has small triangular films and short triple lines (the Voronoi diagram's, the minimisation
 -- shrinks them further); without transitions the run stops on its first step, with them the
 -- shrinking triangles collapse to lines (inverse T1) and the shrinking lines open to films
@@ -7,9 +7,27 @@
 local T = require("froth.test")
 
 local start = froth.foam{n = 64, seed = 1, h = 0.4, lloyd = 20}
+local relaxed = start:clone()
 local m = start:minimize{max_iterations = 200}
 print(("minimize: %s after %d iterations, energy %.9g"):format(m.stop_reason, m.iterations,
                                                                start:energy()))
+T.assert_true(m.stop_reason:find("^topology: a facet angle") ~= nil,
+              "minimize alone stops where a small film collapses", m.stop_reason)
+
+-- minimize{transitions = true} makes the transitions there and goes on
+local mt = relaxed:minimize{max_iterations = 200, transitions = true}
+print(("minimize with transitions: %s after %d iterations in %d rounds, %d transitions, energy %.9g"):format(
+  mt.stop_reason, mt.iterations, mt.rounds, #mt.events, relaxed:energy()))
+T.assert_true(mt.rounds >= 3 and mt.iterations > m.iterations, "it goes on past the collapse",
+              mt.rounds .. " rounds, " .. mt.iterations .. " iterations")
+T.assert_true(#mt.events >= 5, "through transitions", tostring(#mt.events))
+T.assert_true(relaxed:energy() < start:energy() - 1e-4 * start:energy(), "to a lower energy",
+              ("%.9g against %.9g"):format(relaxed:energy(), start:energy()))
+T.assert_true(mt.volume_error <= 1e-12, "at exact volumes", tostring(mt.volume_error))
+for _, e in ipairs(mt.events) do
+  T.assert_true(e.kind == "T1" or e.kind == "inverse T1", "only T1s and inverse T1s", e.kind)
+  T.assert_true(e.step >= 1 and e.step <= mt.rounds, "made after a round", tostring(e.step))
+end
 
 local steps = 4
 local blocked = start:clone()

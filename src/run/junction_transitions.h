@@ -1,0 +1,68 @@
+#pragma once
+/// The T1s and inverse T1s that runs make on their own (evolve with transitions, minimize with
+/// transitions): which junctions are due, and the transition of one. A junction is due when it
+/// is small (a triple line between quadruple points shorter than min_line_fraction of the mean
+/// edge, a triangular film of perimeter below three times that) and has shrunk since the last
+/// look; what a transition makes is not due in the same look.
+
+#include "mesh/cluster.h"
+#include "run/topology_watch.h"
+
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace froth {
+
+/// A topological transition a run made.
+struct TransitionEvent {
+    std::string kind;  ///< "pop body", "T1", "inverse T1"
+    std::string where; ///< what and where, for people (TransitionRecord::where)
+    double t = 0;      ///< the model time of the transition
+    int step = 0;      ///< it followed this step (evolve) or round (minimize) of the run (1-based)
+    int body = -1;     ///< pop: the body that went, as numbered at the start of the run (0-based)
+    int neighbours = 0; ///< pop: the cells around it (the outside counts as one)
+    double energy_before = 0, energy_after = 0;
+    int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)
+    int film = -1;     ///< inverse T1: the film that became a line (0-based, its id before)
+    /// T1: the bodies the new film lies between; inverse T1: those the film lay between; as
+    /// numbered at the start of the run (-1: the outside)
+    std::array<int, 2> cells{-1, -1};
+};
+
+class JunctionTransitions {
+  public:
+    /// min_line_fraction: WatchOptions::min_line_fraction. original_body: the bodies' ids at the
+    /// start of the run, by their ids now (pops remove entries); the memory's keys use them.
+    explicit JunctionTransitions(double min_line_fraction) : fraction_(min_line_fraction) {}
+
+    /// The sizes of c's junctions, for the next look.
+    void remember(const Cluster& c, const std::vector<int>& original_body);
+    /// A new look (after a step): the products of the last look's transitions may be due again.
+    void new_look() { made_.clear(), refused_.clear(); }
+
+    /// The first due junction of c (triangular films with `films`, else lines) whose
+    /// transition can be made, smallest first; with `force` every small one is due, shrinking
+    /// or not. The new cluster and its event (step, t left to the caller), or none (then
+    /// refused() says why the due ones could not be made).
+    std::optional<Cluster> make(const Cluster& c, bool films, bool force,
+                                const std::vector<int>& original_body, TransitionEvent& event);
+    const std::string& refused() const { return refused_; }
+
+  private:
+    std::vector<Junction> junctions(const Cluster& c, bool films,
+                                    const std::vector<int>& original_body) const;
+    std::vector<Junction> due(const Cluster& c, bool films, double limit, bool force,
+                              const std::vector<int>& original_body) const;
+
+    double fraction_;
+    // the sizes of the junctions at the last look, by their cells
+    std::map<std::vector<int>, double> line_sizes_, film_sizes_;
+    std::set<std::vector<int>> made_; // the cells of the junctions this look's transitions made
+    std::string refused_;             // why a due transition could not be made in this look
+};
+
+} // namespace froth

@@ -1,0 +1,101 @@
+// minimize with topological transitions (minimize_transitions.h).
+#include "run/minimize_transitions.h"
+
+#include "mesh/transitions.h"
+#include "run/topology_watch.h"
+
+#include <numeric>
+#include <optional>
+#include <string>
+
+namespace froth {
+namespace {
+
+bool stopped_on_a_facet(const MinimizeResult& r) {
+    return r.stop_reason.rfind("topology: a facet angle", 0) == 0;
+}
+
+/// The due transitions of one look, inverse T1s first; with `force` every small junction.
+int make_transitions(Cluster& c, JunctionTransitions& junctions, bool force, int round,
+                     const std::vector<int>& bodies, std::vector<TransitionEvent>& events) {
+    constexpr int kMaxPerRound = 64; // a bound, should transitions cycle
+    int made = 0;
+    while (made < kMaxPerRound) {
+        TransitionEvent event;
+        std::optional<Cluster> changed = junctions.make(c, true, force, bodies, event);
+        if (!changed) changed = junctions.make(c, false, force, bodies, event);
+        if (!changed) break;
+        c = std::move(*changed);
+        event.step = round;
+        events.push_back(std::move(event));
+        ++made;
+    }
+    return made;
+}
+
+/// A facet with a corner angle below 0.1 degree (a tenth of minimize's collapse limit) that
+/// the transitions and the upkeep left, named (the next round would start degenerate).
+std::optional<std::string> sliver_left(const Cluster& c) {
+    WatchOptions w;
+    w.min_volume_fraction = 0;
+    w.min_edge_fraction = 0;
+    w.min_facet_angle = 0.1;
+    w.self_intersection_every = 0;
+    const std::optional<TopologyEvent> e = TopologyWatch(w).check(c, 0);
+    if (!e) return std::nullopt;
+    return e->message.substr(0, e->message.rfind(" at t = "));
+}
+
+/// Short edges collapse and the films flip to Delaunay; the number of collapses.
+int tidy_mesh(Cluster& c, TransitionMinimizeResult& out) {
+    EdgeCollapseResult collapsed = collapse_short_edges(c, 0.05 * mean_edge_length(c));
+    if (collapsed.cluster) c = std::move(*collapsed.cluster);
+    out.collapsed_edges += collapsed.collapsed;
+    EquiangulateResult flipped = equiangulate(c);
+    if (flipped.cluster) c = std::move(*flipped.cluster);
+    out.flipped_edges += flipped.flips;
+    return collapsed.collapsed;
+}
+
+} // namespace
+
+TransitionMinimizeResult minimize_with_transitions(Cluster& c,
+                                                   const TransitionMinimizeOptions& o) {
+    TransitionMinimizeResult out;
+    std::vector<int> bodies(c.n_bodies());
+    std::iota(bodies.begin(), bodies.end(), 0);
+    JunctionTransitions junctions(o.min_line_fraction);
+    junctions.remember(c, bodies);
+    MinimizeOptions m = o.minimize;
+    int iterations = 0, rejected = 0;
+    double seconds = 0;
+    for (;;) {
+        m.max_iterations = o.minimize.max_iterations - iterations;
+        MinimizeResult r = minimize(c, m);
+        ++out.rounds;
+        iterations += r.iterations, rejected += r.rejected, seconds += r.wall_seconds;
+        r.iterations = iterations, r.rejected = rejected, r.wall_seconds = seconds;
+        out.result = std::move(r);
+        if (!stopped_on_a_facet(out.result) || out.rounds >= o.max_rounds ||
+            iterations >= o.minimize.max_iterations)
+            break;
+        junctions.new_look();
+        int made = make_transitions(c, junctions, false, out.rounds, bodies, out.events);
+        if (made == 0) made = make_transitions(c, junctions, true, out.rounds, bodies, out.events);
+        const int collapsed = tidy_mesh(c, out);
+        if (made == 0 && collapsed == 0) {
+            if (!junctions.refused().empty())
+                out.result.stop_reason += "; " + junctions.refused();
+            break;
+        }
+        if (const auto sliver = sliver_left(c)) {
+            out.result.stop_reason += "; after the transitions " + *sliver +
+                                      " (the mesh upkeep did not remove it)";
+            break;
+        }
+        junctions.remember(c, bodies);
+    }
+    return out;
+}
+
+} // namespace froth
