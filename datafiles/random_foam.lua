@@ -3,16 +3,18 @@
 -- centroid), meshed by gmsh with films graded towards the diagram's short edges (split fans
 -- without gmsh), the cells set to equal volumes, and minimized at those volumes. Prints the
 -- diagram, the mesh, and the cost (a cell's area, films counted for both cells, over V^(2/3))
--- before and after; writes out/random_foam.vtu (the cells unwrapped). minimize makes no T1s
--- yet, so it stops where a short triple line collapses ("topology: ..."), the cost fallen
--- from 5.384 to 5.365 at the defaults (docs/benchmarks.md, "Foams").
+-- before and after; writes out/random_foam.vtu (the cells unwrapped). minimize stops where a
+-- short triple line collapses ("topology: ..."), the cost fallen from 5.384 to 5.365 at the
+-- defaults (docs/benchmarks.md, "Foams"); with transitions=1 it makes the T1s and inverse T1s
+-- there and goes on for some rounds (docs/lua_api.md, c:minimize).
 --
 -- Sample runs:  froth datafiles/random_foam.lua                 (64 cells, 50 Lloyd steps: 5 s)
 --               froth datafiles/random_foam.lua n=16 lloyd=0 mesher=fan
+--               froth datafiles/random_foam.lua lloyd=20 transitions=1
 --               FROTH_SMOKE=1 froth datafiles/random_foam.lua  (ctest: 16 cells, 5 iterations)
 local script = require("froth.script")
 local opts = script.options({n = 64, seed = 1, lloyd = 50, h = 0.4, mesher = "", max_iterations = 1000,
-                             output = "out"}, arg)
+                             transitions = 0, output = "out"}, arg)
 if opts.smoke then opts.n, opts.max_iterations = 16, 5 end
 local mesher = opts.mesher ~= "" and opts.mesher or nil
 
@@ -22,9 +24,12 @@ local n = info.bodies
 print(("%d cells (seed %d, %d Lloyd steps): %d films, %d triple lines, %d quadruple points; %d vertices")
       :format(n, opts.seed, opts.lloyd, info.surfaces, #c:triple_lines(), #c:quadruple_points(), info.vertices))
 print(("flat cells: cost %.5f"):format(2 * c:energy() / n))
-local r = c:minimize{max_iterations = opts.max_iterations}
+local r = c:minimize{max_iterations = opts.max_iterations, transitions = opts.transitions ~= 0}
 print(("minimize: %d iterations in %.2f s, residual %.3g, volume error %.2g"):format(r.iterations, r.wall_s,
       r.residual, r.volume_error))
+if r.events then
+  print(("%d transitions in %d rounds"):format(#r.events, r.rounds))
+end
 print(("cost %.5f; stop: %s"):format(2 * r.energy / n, r.stop_reason))
 local path = opts.output .. "/random_foam.vtu"
 c:write(path)
