@@ -211,20 +211,36 @@ int l_t1(lua_State* L) {
     });
 }
 
-/// c:t1_inverse(surface) -> {surface, cells, point, where, removed_vertices, energy_before,
-/// energy_after}: a triangular film between two cells becomes a triple line (the inverse T1).
-int l_t1_inverse(lua_State* L) {
+/// c:t1_inverse(surface) and c:collapse_two_sided_film(surface) -> {surface, cells, point,
+/// where, removed_vertices, energy_before, energy_after}: a film between two cells goes.
+template <class Collapse>
+int film_collapse(lua_State* L, const char* op, Collapse collapse) {
     ClusterHandle& h = self(L);
-    ChangeGuard changing(L, h, "t1_inverse");
+    ChangeGuard changing(L, h, op);
     const int film = check_id(L, 2, h.cluster.n_surfaces(), "surface", "surfaces");
     return guarded(L, [&] {
         TransitionRecord record;
-        apply_transition(L, h, t1_film_to_line(h.cluster, film, &record), record); // throws first
+        apply_transition(L, h, collapse(h.cluster, film, &record), record); // throws first
         set_integer(L, "surface", film + 1);
         push_integers(L, std::vector<int>{record.cells[0] + 1, record.cells[1] + 1});
         lua_setfield(L, -2, "cells");
         return 1;
     });
+}
+
+/// c:t1_inverse(surface): a triangular film becomes a triple line (the inverse T1).
+int l_t1_inverse(lua_State* L) {
+    return film_collapse(L, "t1_inverse", [](const Cluster& c, int film, TransitionRecord* r) {
+        return t1_film_to_line(c, film, r);
+    });
+}
+
+/// c:collapse_two_sided_film(surface): a lens between two quadruple points goes.
+int l_collapse_two_sided_film(lua_State* L) {
+    return film_collapse(L, "collapse_two_sided_film",
+                         [](const Cluster& c, int film, TransitionRecord* r) {
+                             return collapse_two_sided_film(c, film, r);
+                         });
 }
 
 /// The one length option of c:collapse_edges / c:split_edges, positive and finite.
@@ -306,6 +322,7 @@ const luaL_Reg methods[] = {
     {"pop_body", l_pop_body},
     {"t1", l_t1},
     {"t1_inverse", l_t1_inverse},
+    {"collapse_two_sided_film", l_collapse_two_sided_film},
     {"collapse_edges", l_collapse_edges},
     {"split_edges", l_split_edges},
     {"minimize", l_minimize},

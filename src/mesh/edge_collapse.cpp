@@ -16,6 +16,7 @@
 #include "mesh/transition_surgery.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -44,9 +45,18 @@ struct Candidate {
     int a, b; // a < b
 };
 
+/// Which edges a pass tries: those shorter than min_length, and with needle_angle > 0 the
+/// short side of every needle, a facet with a corner below needle_angle degrees whose shortest
+/// side is below half its middle one (a cap, whose small angle has no short side opposite,
+/// is the flips' business).
+struct CollapseCriteria {
+    double min_length = 0;
+    double needle_angle = 0;
+};
+
 class Collapser {
   public:
-    Collapser(const Cluster& c, double min_length) : c_(c), min_length_(min_length) {}
+    Collapser(const Cluster& c, CollapseCriteria criteria) : c_(c), criteria_(criteria) {}
     /// One pass; the number of edges collapsed (0: the spec is not needed).
     int pass();
     ClusterSpec& spec() { return spec_; }
@@ -58,7 +68,7 @@ class Collapser {
     bool link_condition(int a, int b) const;
 
     const Cluster& c_;
-    const double min_length_;
+    const CollapseCriteria criteria_;
     ClusterSpec spec_;
     std::vector<Vec3> X_;
     std::vector<int> rank_;
@@ -70,15 +80,30 @@ class Collapser {
     std::vector<int> facets_left_;                            // per surface, after the drops
 };
 
+/// The index k of the needle side (corners k, k + 1) of the triangle x, or -1.
+int needle_side(const std::array<Vec3, 3>& x, double needle_angle) {
+    std::array<double, 3> l;
+    for (int k = 0; k < 3; ++k) l[k] = (x[(k + 1) % 3] - x[k]).norm();
+    const int k = static_cast<int>(std::min_element(l.begin(), l.end()) - l.begin());
+    const double middle = std::min(l[(k + 1) % 3], l[(k + 2) % 3]);
+    if (!(l[k] < 0.5 * middle)) return -1;
+    // the angle opposite the shortest side is the smallest
+    const Vec3 u = x[k] - x[(k + 2) % 3], w = x[(k + 1) % 3] - x[(k + 2) % 3];
+    const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
+    return angle < needle_angle ? k : -1;
+}
+
 std::vector<Candidate> Collapser::short_edges() const {
     std::map<std::pair<int, int>, double> length;
     for (int si = 0; si < c_.n_surfaces(); ++si) {
         const Surface& s = c_.surface(si);
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
             const auto x = s.corners(c_.positions(), f);
+            const int needle =
+                criteria_.needle_angle > 0 ? needle_side(x, criteria_.needle_angle) : -1;
             for (int k = 0; k < 3; ++k) {
                 const double l = (x[(k + 1) % 3] - x[k]).norm();
-                if (l < min_length_)
+                if (l < criteria_.min_length || k == needle)
                     length[std::minmax(s.triangles[f][k], s.triangles[f][(k + 1) % 3])] = l;
             }
         }
@@ -197,9 +222,11 @@ int Collapser::pass() {
 
 } // namespace
 
-EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length) {
+namespace {
+
+EdgeCollapseResult collapse_edges(const Cluster& c, CollapseCriteria criteria) {
     EdgeCollapseResult r;
-    Collapser collapser(c, min_length);
+    Collapser collapser(c, criteria);
     r.collapsed = collapser.pass();
     if (r.collapsed == 0) return r;
     ClusterSpec& spec = collapser.spec();
@@ -209,6 +236,16 @@ EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length) {
                                        "the collapses"));
     carry_over(c, *r.cluster);
     return r;
+}
+
+} // namespace
+
+EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length) {
+    return collapse_edges(c, {min_length, 0});
+}
+
+EdgeCollapseResult collapse_needles(const Cluster& c, double max_angle) {
+    return collapse_edges(c, {0, max_angle});
 }
 
 } // namespace froth

@@ -182,7 +182,7 @@ void T1::place_corners(double side) {
 /// first_side() down, halving, to the line's length or smallest_side that turns no facet
 /// over (where the mesh beside the line is finer than the film would be).
 std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
-    const double smallest = std::max(length_, smallest_side_);
+    const double smallest = std::max(0.125 * length_, smallest_side_);
     int turned = -1;
     for (double side = first_side();; side *= 0.5) {
         place_corners(side);

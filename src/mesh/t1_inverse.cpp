@@ -10,6 +10,14 @@
 // take a, those on the side of (E, X, Y) take b, and a new facet (a, u, b) fills the gap,
 // its edge the new line's edge in X|Y. So a and b each have six films and four triple
 // lines: Plateau quadruple points. This is the T1 of t1.cpp run backwards.
+//
+// A two-sided film (a lens between two quadruple points q_1, q_2, sides l_X and l_Y; what a T1
+// on a side of a triangular film leaves) collapses by the same surgery: its sides become a
+// (in D|X, D|Y) and b (in E|X, E|Y), and the fans of X|Y at q_1 and q_2 split between a and b,
+// the two gap facets sharing the edge (a, b). That edge is not a triple line: the two X|Y
+// films at q_1 and q_2 (or the one, met twice) become one film across it, and a and b are
+// points of the lines (D, X, Y) and (E, X, Y), which run on through them. D and E no longer
+// touch there; two quadruple points go.
 #include "mesh/transitions.h"
 
 #include "core/errors.h"
@@ -41,9 +49,12 @@ struct Side {
 
 class InverseT1 {
   public:
-    InverseT1(const Cluster& c, int film, double min_length, double smallest_length)
-        : c_(c), film_(film), min_length_(min_length), smallest_length_(smallest_length),
-          name_("t1_inverse: surface " + std::to_string(film + 1)),
+    /// sides: 3 for the inverse T1 of a triangular film, 2 for the collapse of a lens.
+    InverseT1(const Cluster& c, int film, int sides, double min_length, double smallest_length)
+        : c_(c), film_(film), n_sides_(sides), min_length_(min_length),
+          smallest_length_(smallest_length),
+          name_(std::string(sides == 3 ? "t1_inverse" : "collapse_two_sided_film") +
+                ": surface " + std::to_string(film + 1)),
           cells_(surface_cells(c)) {}
 
     Cluster run(TransitionRecord* record);
@@ -56,12 +67,15 @@ class InverseT1 {
     void unwrap_film();
     int corner_towards(int q, int film, int w) const;
     std::vector<Vec3> place_line(const ClusterSpec& spec);
-    void remove_film(ClusterSpec& spec) const;
+    void join_corner_films(ClusterSpec& spec);
+    void remove_surfaces(ClusterSpec& spec) const;
     Cluster finish(Cluster r) const;
+    void check_ends(const Cluster& r, const std::vector<int>& used) const;
     std::string where() const;
 
     const Cluster& c_;
     const int film_;
+    const int n_sides_;
     const double min_length_, smallest_length_;
     const std::string name_;
     const std::vector<std::array<int, 2>> cells_;
@@ -69,6 +83,7 @@ class InverseT1 {
     std::set<int> vertices_;              // F's vertices
     std::vector<Side> sides_;
     std::map<int, int> corner_film_;      // q_XY -> X|Y
+    std::vector<int> removed_;            // the surfaces that go, sorted: F (and a lens's X|Y)
     std::map<int, Vec3> u_;               // F's vertices unwrapped, in one frame
     std::map<int, Offset> d_;             // their lattice offsets in that frame
     Vec3 centre_ = Vec3::Zero(), into_d_ = Vec3::Zero();
@@ -135,9 +150,11 @@ void InverseT1::find_sides() {
                                 "between quadruple points collapses");
         sides_.push_back(side_of(l));
     }
-    if (sides_.size() != 3)
+    if (static_cast<int>(sides_.size()) != n_sides_)
         throw TopologyError(name_ + " has " + std::to_string(sides_.size()) + " triple lines "
-                            "on its border, not three; only a triangular film collapses");
+                            "on its border, not " + (n_sides_ == 3 ? "three; only a triangular "
+                            "film collapses to a line" : "two; only a two-sided film (a lens) "
+                            "collapses this way"));
     std::map<int, int> ends;
     std::set<int> cells;
     for (const Side& side : sides_) {
@@ -151,9 +168,10 @@ void InverseT1::find_sides() {
             throw TopologyError(name_ + ": its border's corner at vertex " +
                                 std::to_string(q + 1) + " is not a quadruple point where two "
                                 "of its lines meet");
-    if (ends.size() != 3 || cells.size() != 3)
-        throw TopologyError(name_ + ": the cells around its border are not three distinct "
-                            "ones besides " + body_name(d_cell_) + " and " + body_name(e_cell_));
+    if (static_cast<int>(ends.size()) != n_sides_ || static_cast<int>(cells.size()) != n_sides_)
+        throw TopologyError(name_ + ": the cells around its border are not " +
+                            (n_sides_ == 3 ? "three" : "two") + " distinct ones besides " +
+                            body_name(d_cell_) + " and " + body_name(e_cell_));
 }
 
 /// At each corner q_XY, the one film there that is neither F nor a side's: X|Y.
@@ -243,7 +261,7 @@ int InverseT1::corner_towards(int q, int film, int w) const {
 /// would turn over, at most ten times and not below smallest_length.
 std::vector<Vec3> InverseT1::place_line(const ClusterSpec& spec) {
     double mean = 0;
-    for (const Side& side : sides_) mean += side.length / 3;
+    for (const Side& side : sides_) mean += side.length / n_sides_;
     int turned = -1;
     double length = std::max(mean, min_length_);
     for (int halvings = 0; halvings <= 10; ++halvings, length *= 0.5) {
@@ -261,27 +279,74 @@ std::vector<Vec3> InverseT1::place_line(const ClusterSpec& spec) {
                         "or too coarse for it");
 }
 
-/// F goes from the surfaces and the bodies; the surfaces after it move down one id.
-void InverseT1::remove_film(ClusterSpec& spec) const {
-    spec.surfaces.erase(spec.surfaces.begin() + film_);
+/// A lens: the X|Y film at its second corner joins the one at its first (its facets turned
+/// if the two face different ways), which keeps its tension; the second goes.
+void InverseT1::join_corner_films(ClusterSpec& spec) {
+    removed_ = {film_};
+    if (n_sides_ != 2) return;
+    const int keep = corner_film_.begin()->second, gone = corner_film_.rbegin()->second;
+    if (keep == gone) return;
+    // both lie between X and Y, one of which is a body: the sign it gives each says their ways
+    const int k = sides_[0].cell >= 0 ? sides_[0].cell : sides_[1].cell;
+    const auto sign_in_k = [&](int surface) {
+        for (const BodyFace& f : c_.bodies()[k].faces)
+            if (f.surface == surface) return f.sign;
+        return 0;
+    };
+    const bool flip = sign_in_k(keep) != sign_in_k(gone);
+    auto& from = spec.surfaces[gone];
+    auto& to = spec.surfaces[keep];
+    for (std::size_t f = 0; f < from.triangles.size(); ++f) {
+        Tri t = from.triangles[f];
+        if (flip) std::swap(t[1], t[2]);
+        to.triangles.push_back(t);
+        if (!to.offsets.empty()) {
+            auto o = from.offsets[f];
+            if (flip) std::swap(o[1], o[2]);
+            to.offsets.push_back(o);
+        }
+    }
+    removed_.push_back(gone);
+    std::sort(removed_.begin(), removed_.end());
+}
+
+/// The surfaces of removed_ go from the surfaces and the bodies; those after them move down.
+void InverseT1::remove_surfaces(ClusterSpec& spec) const {
+    for (auto it = removed_.rbegin(); it != removed_.rend(); ++it)
+        spec.surfaces.erase(spec.surfaces.begin() + *it);
+    const auto new_id = [&](int s) {
+        return s - static_cast<int>(std::lower_bound(removed_.begin(), removed_.end(), s) -
+                                    removed_.begin());
+    };
     for (auto& body : spec.bodies) {
         std::vector<int> kept;
         for (int s : body)
-            if (s != film_) kept.push_back(s > film_ ? s - 1 : s);
+            if (!std::binary_search(removed_.begin(), removed_.end(), s)) kept.push_back(new_id(s));
         body = std::move(kept);
     }
 }
 
 /// The materials of the kept surfaces, the time and the bodies' volumes go over to r.
 Cluster InverseT1::finish(Cluster r) const {
-    for (int s = 0; s < r.n_surfaces(); ++s) {
-        const int old = s < film_ ? s : s + 1;
+    for (int s = 0, old = 0; s < r.n_surfaces(); ++s, ++old) {
+        while (std::binary_search(removed_.begin(), removed_.end(), old)) ++old;
         r.set_anisotropy(s, c_.surface(old).gamma);
         r.set_mobility(s, c_.surface(old).beta);
     }
     r.set_time(c_.time());
     r.set_volume_references(c_.initial_volumes(), c_.target_volumes());
     return r;
+}
+
+/// a and b are quadruple points after an inverse T1, points of one triple line each after a
+/// lens's collapse.
+void InverseT1::check_ends(const Cluster& r, const std::vector<int>& used) const {
+    const std::size_t lines = n_sides_ == 3 ? 4 : 2;
+    for (int p : {n_, n_ + 1})
+        if (r.vertex_junction_edges(used[p]).size() != lines)
+            throw TopologyError(name_ + ": " + (n_sides_ == 3 ? "an end of the new line is not "
+                                "a quadruple point" : "a new point is not on one triple line") +
+                                "; refine the mesh around the film first");
 }
 
 std::string InverseT1::where() const {
@@ -292,10 +357,13 @@ std::string InverseT1::where() const {
         cells += (cells.empty() ? "" : side.line == sides_.back().line ? " and " : ", ") +
                  body_name(side.cell);
     }
-    return "triangular film " + std::to_string(film_ + 1) + " between " + body_name(d_cell_) +
-           " and " + body_name(e_cell_) + " (triple lines " + lines + ") became a triple "
-           "line of length " + fmt(length_) + " between " + cells + " at " +
-           point_text(centre_);
+    const std::string film = std::to_string(film_ + 1) + " between " + body_name(d_cell_) +
+                             " and " + body_name(e_cell_) + " (triple lines " + lines + ")";
+    if (n_sides_ == 2)
+        return "two-sided film " + film + " collapsed: " + cells + " meet across it at " +
+               point_text(centre_);
+    return "triangular film " + film + " became a triple line of length " + fmt(length_) +
+           " between " + cells + " at " + point_text(centre_);
 }
 
 Cluster InverseT1::run(TransitionRecord* record) {
@@ -317,21 +385,19 @@ Cluster InverseT1::run(TransitionRecord* record) {
         surgery::split_fan(c_, spec, film, q, d_.at(q), towards, moved_, name_);
     }
     std::vector<Vec3> V = place_line(spec);
-    remove_film(spec);
+    join_corner_films(spec);
+    remove_surfaces(spec);
     const std::vector<int> used = surgery::keep_used_vertices(spec, V);
     surgery::copy_vertex_lists(c_, [&](int v) { return used[v]; }, spec);
     Cluster r = finish(surgery::rebuild(std::move(spec), name_, "its collapse"));
-    for (int p : {n_, n_ + 1})
-        if (r.vertex_junction_edges(used[p]).size() != 4)
-            throw TopologyError(name_ + ": an end of the new line is not a quadruple point; "
-                                "refine the mesh around the film first");
+    check_ends(r, used);
     if (record) {
-        record->kind = "inverse T1";
+        record->kind = n_sides_ == 3 ? "inverse T1" : "two-sided film";
         record->film = film_;
         record->cells = {d_cell_, e_cell_};
         record->point = centre_;
         record->removed_vertices = c_.n_vertices() + 2 - r.n_vertices();
-        record->removed_facets = c_.n_facets() + 3 - r.n_facets(); // a gap facet per corner
+        record->removed_facets = c_.n_facets() + n_sides_ - r.n_facets(); // a gap facet per corner
         record->where = where();
     }
     return r;
@@ -344,7 +410,16 @@ Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record,
     if (surface < 0 || surface >= c.n_surfaces())
         throw InvalidInput("t1_inverse: surface " + std::to_string(surface + 1) + " does not "
                            "exist (the cluster has " + std::to_string(c.n_surfaces()) + ")");
-    return InverseT1(c, surface, min_length, smallest_length).run(record);
+    return InverseT1(c, surface, 3, min_length, smallest_length).run(record);
+}
+
+Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord* record,
+                                double min_length) {
+    if (surface < 0 || surface >= c.n_surfaces())
+        throw InvalidInput("collapse_two_sided_film: surface " + std::to_string(surface + 1) +
+                           " does not exist (the cluster has " + std::to_string(c.n_surfaces()) +
+                           ")");
+    return InverseT1(c, surface, 2, min_length, 0).run(record);
 }
 
 } // namespace froth

@@ -57,7 +57,7 @@ struct MovedFacet {
 /// Surface si of spec (still c's facets): the vertices that are keys of `d` become the new
 /// vertex p, their corner offsets less d (each vertex's lattice offset in p's frame); facets
 /// with two or more such corners go, the others that take p are added to `moved`.
-/// 	hrow TopologyError "<what>: ..." if p's facets would not form one fan.
+/// \throw TopologyError "<what>: ..." if p's facets would not form one fan.
 void collapse_onto(const Cluster& c, ClusterSpec& spec, int si, const std::map<int, Offset>& d,
                    int p, std::vector<MovedFacet>& moved, const std::string& what);
 
@@ -67,7 +67,7 @@ void collapse_onto(const Cluster& c, ClusterSpec& spec, int si, const std::map<i
 /// (m = ceil(n / 2), so the facets at both ends of the fan take their own corner), their
 /// offsets at v less dv (v's lattice offset in the corners' frame), and the new facet
 /// (p, u_m, q) fills the gap; its edge q -> p is a new junction edge.
-/// 	hrow TopologyError "<what>: ..." if the fan is folded, closed or pinched at v.
+/// \throw TopologyError "<what>: ..." if the fan is folded, closed or pinched at v.
 void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset& dv,
                const std::function<int(int)>& corner_towards, std::vector<MovedFacet>& moved,
                const std::string& what);

@@ -13,11 +13,11 @@ namespace froth {
 
 /// What a transition did, for event lists and messages.
 struct TransitionRecord {
-    std::string kind;    ///< "pop body", "T1", "inverse T1"
+    std::string kind;    ///< "pop body", "T1", "inverse T1", "two-sided film"
     std::string where;   ///< for people: "body 3 (volume 1e-05, 4 neighbouring cells) at (x, y, z)"
     int body = -1;       ///< pop: the body that vanished (0-based, its id before the pop)
     int line = -1;       ///< T1: the triple line that became a film (0-based, before)
-    int film = -1;       ///< inverse T1: the film that became a line (0-based, before)
+    int film = -1;       ///< inverse T1, two-sided film: the film that went (0-based, before)
     /// T1: the bodies the new film lies between; inverse T1: those the film lay between
     /// (-1: outside)
     std::array<int, 2> cells{-1, -1};
@@ -82,13 +82,29 @@ Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = n
 /// and keep their tensions, anisotropies and mobilities; bodies, their reference and target
 /// volumes are kept (the surgery moves a volume of order side^3). This is t1_line_to_film
 /// backwards.
-/// 	hrow InvalidInput for a surface id out of range; TopologyError (naming the surface and
+/// \throw InvalidInput for a surface id out of range; TopologyError (naming the surface and
 /// why, nothing changed) for a film between a cell and itself, one that is not a disk
 /// bounded by three triple lines between three quadruple points, with the same third cell
 /// on two sides, with fixed or wall vertices, whose collapse would pinch or fold a film, or
 /// where every length allowed turns a facet over.
 Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record = nullptr,
                         double min_length = 0, double smallest_length = 0);
+
+/// The collapse of a two-sided film (a lens between two quadruple points q_1 and q_2, left where
+/// a T1 takes a side of a triangular film): surface `surface`, between cells D and E, bounded
+/// by two triple lines (D, E, X) and (D, E, Y) from q_1 to q_2, X != Y, goes. Its sides become
+/// two points a (towards D) and b (towards E) on its normal through its centre, the larger of
+/// the sides' mean length and min_length apart (halved while a facet would turn over, at most
+/// ten times); the films D|X, D|Y close at a and E|X, E|Y at b, and the films X|Y at q_1 and
+/// q_2 join across the edge (a, b) into one (the one at q_1, with its tension, anisotropy and
+/// mobility; the other's facets are turned to face its way). a and b are points of the lines
+/// (D, X, Y) and (E, X, Y): two quadruple points go, D and E no longer touch there. Surfaces
+/// after the removed ones move down; bodies, their reference and target volumes are kept.
+/// \throw InvalidInput for a surface id out of range; TopologyError (naming the surface and
+/// why, nothing changed) as t1_film_to_line, for a film that is not a disk bounded by two
+/// triple lines between two quadruple points with distinct third cells.
+Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord* record = nullptr,
+                                double min_length = 0);
 
 /// Mesh upkeep: what collapse_short_edges made.
 struct EdgeCollapseResult {
@@ -104,6 +120,12 @@ struct EdgeCollapseResult {
 /// (film < triple line < quadruple point) keeps its place, equal ranks meet halfway.
 /// Materials, time and the bodies' reference and target volumes are kept.
 EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length);
+
+/// Evolver's `w` for needles: collapses the short side of each facet with a corner angle below
+/// max_angle degrees whose shortest side is below half its middle one (a needle; a flat cap
+/// has no short side and is left to the flips), under the rules of collapse_short_edges: a
+/// needle whose short side joins two junctions across a film, or two quadruple points, stays.
+EdgeCollapseResult collapse_needles(const Cluster& c, double max_angle);
 
 struct EdgeSplitResult {
     std::optional<Cluster> cluster; ///< none when nothing was split

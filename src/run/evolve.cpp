@@ -252,7 +252,7 @@ class Run {
                 (collapse_edges() || transition_junction(true, true) ||
                  transition_junction(false, true)))
                 continue;
-            if (e->kind == "collapsing facet" && flip_edges()) continue;
+            if (e->kind == "collapsing facet" && (flip_edges() || collapse_needles())) continue;
             break;
         }
         if (e && !junctions_.refused().empty()) e->message += "; " + junctions_.refused();
@@ -317,6 +317,18 @@ class Run {
         if (!flipped.cluster) return false;
         r_.flipped_edges += flipped.flips;
         replace_cluster(std::move(*flipped.cluster), false);
+        return true;
+    }
+
+    /// Mesh upkeep for a collapsing facet that the flips left after a transition: the short
+    /// sides of needles (corners below ten times the watch's angle) collapse.
+    bool collapse_needles() {
+        if (r_.events.empty()) return false;
+        EdgeCollapseResult collapsed =
+            froth::collapse_needles(c_, 10 * o_.watch.min_facet_angle);
+        if (!collapsed.cluster) return false;
+        r_.collapsed_edges += collapsed.collapsed;
+        replace_cluster(std::move(*collapsed.cluster), false);
         return true;
     }
 

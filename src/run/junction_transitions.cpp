@@ -23,7 +23,7 @@ std::vector<int> product_cells(const std::vector<int>& cells, bool film) {
 
 std::vector<Junction> JunctionTransitions::junctions(const Cluster& c, bool films,
                                                      const std::vector<int>& original_body) const {
-    std::vector<Junction> js = films ? triangular_films(c) : quadruple_lines(c);
+    std::vector<Junction> js = films ? collapsible_films(c) : quadruple_lines(c);
     for (Junction& j : js)
         for (int& k : j.cells)
             if (k >= 0) k = original_body[k];
@@ -44,7 +44,7 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
     const auto& memory = films ? film_sizes_ : line_sizes_;
     std::vector<Junction> out;
     for (Junction& j : junctions(c, films, original_body)) {
-        if (!(j.size < (films ? 3 : 1) * limit)) continue;
+        if (!(j.size < (films ? j.sides() : 1) * limit)) continue;
         if (made_.count(j.cells)) continue; // a product of this look's transitions
         const auto was = memory.find(j.cells);
         if (force || (was != memory.end() && j.size < was->second)) out.push_back(std::move(j));
@@ -54,24 +54,47 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
     return out;
 }
 
+namespace {
+
+/// The triangular film that has triple line `line` on its border, or -1. A T1 there would
+/// leave a two-sided film whose collapse then takes the film: the triangle's inverse T1 in
+/// two steps (the same cells meet in the end), which on a film of one facet (a T1's) the T1
+/// cannot even make.
+const Junction* triangle_beside(const Cluster& c, int line, const std::vector<Junction>& films) {
+    for (const Junction& f : films)
+        if (f.sides() == 3)
+            for (int s : c.triple_lines()[line].surfaces)
+                if (s == f.id) return &f;
+    return nullptr;
+}
+
+} // namespace
+
 std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, bool force,
                                                  const std::vector<int>& original_body,
                                                  TransitionEvent& event) {
-    if (c.quadruple_points().size() < (films ? 3u : 2u)) return std::nullopt;
+    if (c.quadruple_points().size() < 2u) return std::nullopt;
     const double limit = fraction_ * mean_edge_length(c);
+    const std::vector<Junction> small_films = films ? std::vector<Junction>{}
+                                                    : collapsible_films(c);
     for (const Junction& j : due(c, films, limit, force, original_body)) {
         TransitionRecord record;
         try {
             // the product is at least twice the limit in size where the mesh lets it be
-            Cluster changed = films ? t1_film_to_line(c, j.id, &record, 2 * limit)
-                                    : t1_line_to_film(c, j.id, &record, 2 * limit);
+            const Junction* triangle = films ? nullptr : triangle_beside(c, j.id, small_films);
+            const Junction& acted = triangle ? *triangle : j; // the junction that changes
+            const bool film = films || triangle;
+            const int id = acted.id;
+            Cluster changed = !film                ? t1_line_to_film(c, id, &record, 2 * limit)
+                              : acted.sides() == 3 ? t1_film_to_line(c, id, &record, 2 * limit)
+                                                   : collapse_two_sided_film(c, id, &record);
             event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),
                                     energy(changed)};
-            (films ? event.film : event.line) = j.id;
+            (film ? event.film : event.line) = id;
             event.cells = record.cells;
             for (int& k : event.cells)
                 if (k >= 0) k = original_body[k];
-            made_.insert(product_cells(j.cells, films));
+            if (!film || acted.sides() == 3) made_.insert(product_cells(acted.cells, film));
             return changed;
         } catch (const TopologyError& x) {
             std::string why = x.what();

@@ -43,7 +43,8 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
     // with transitions, a line between quadruple points is the T1's unless far shorter
     const double line_factor = o.lines_to_transitions ? 0.1 : 1;
     // The facet angle furthest below its surface's limit, as angle / limit.
-    double sum = 0, shortest = INFINITY, scaled_shortest = INFINITY, angle_ratio = INFINITY, smallest_angle = 180;
+    double sum = 0, shortest = INFINITY, scaled_shortest = INFINITY;
+    double angle_ratio = INFINITY, smallest_angle = 180;
     long count = 0;
     int s_edge = 0, f_edge = 0, s_angle = 0, f_angle = 0;
     for (int i = 0; i < c.n_surfaces(); ++i) {
@@ -160,16 +161,17 @@ std::vector<Junction> quadruple_lines(const Cluster& c) {
     return out;
 }
 
-std::vector<Junction> triangular_films(const Cluster& c) {
+std::vector<Junction> collapsible_films(const Cluster& c) {
     std::vector<Junction> out;
-    if (c.quadruple_points().size() < 3) return out;
+    if (c.quadruple_points().size() < 2) return out;
     const auto cells = surface_cells(c);
     std::vector<std::vector<int>> border(c.n_surfaces()); // each surface's triple lines
     const auto& lines = c.triple_lines();
     for (int l = 0; l < static_cast<int>(lines.size()); ++l)
         for (int s : lines[l].surfaces) border[s].push_back(l);
     for (int s = 0; s < c.n_surfaces(); ++s) {
-        if (border[s].size() != 3 || cells[s][0] == cells[s][1]) continue;
+        const std::size_t n = border[s].size();
+        if ((n != 2 && n != 3) || cells[s][0] == cells[s][1]) continue;
         Junction j{s, 0, {std::min(cells[s][0], cells[s][1]), std::max(cells[s][0], cells[s][1])}};
         std::set<int> sides;
         bool ok = true;
@@ -179,7 +181,7 @@ std::vector<Junction> triangular_films(const Cluster& c) {
             for (int cell : cells_around(cells, lines[l]))
                 if (cell != j.cells[0] && cell != j.cells[1]) sides.insert(cell);
         }
-        if (!ok || sides.size() != 3) continue;
+        if (!ok || sides.size() != n) continue;
         j.cells.insert(j.cells.end(), sides.begin(), sides.end());
         out.push_back(std::move(j));
     }

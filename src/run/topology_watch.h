@@ -30,8 +30,8 @@ struct WatchOptions {
     /// Test for crossing facets (CGAL) every this many steps; 0 never.
     int self_intersection_every = 10;
     /// A triple line between two quadruple points shorter than this fraction of the mean edge
-    /// length, or a triangular film of perimeter below three times that, is vanishing (evolve
-    /// makes a T1 or an inverse T1 there once it shrinks).
+    /// length, or a triangular (two-sided) film of perimeter below three (two) times that, is
+    /// vanishing (evolve makes a T1, an inverse T1 or a lens's collapse there once it shrinks).
     double min_line_fraction = 0.2;
 };
 
@@ -49,19 +49,23 @@ struct EdgeLengths {
 EdgeLengths edge_lengths(const Cluster& c);
 double mean_edge_length(const Cluster& c); ///< edge_lengths(c).mean
 
-/// Where a T1 or an inverse T1 can act: a triple line between two distinct quadruple
-/// points, or a triangular film (bounded by three such lines, between two cells, with three
-/// other cells along its sides). The cells name it through transitions of other junctions,
-/// where its id changes.
+/// Where a T1, an inverse T1 or a lens's collapse can act: a triple line between two
+/// distinct quadruple points, a triangular film (bounded by three such lines, between two
+/// cells, with three other cells along its sides) or a two-sided film (a lens: two such lines
+/// between the same two quadruple points, two other cells along them). The cells name it
+/// through transitions of other junctions, where its id changes.
 struct Junction {
     int id = -1;       ///< the triple line's or the surface's (0-based)
     double size = 0;   ///< the line's length, the film's perimeter
     /// line: the three cells around it sorted, then the two at its ends sorted; film: its two
-    /// cells sorted, then the three of its sides sorted (body ids, -1 the outside)
+    /// cells sorted, then the three (two) of its sides sorted (body ids, -1 the outside)
     std::vector<int> cells;
+    /// the number of sides of a film
+    int sides() const { return static_cast<int>(cells.size()) - 2; }
 };
 std::vector<Junction> quadruple_lines(const Cluster& c);
-std::vector<Junction> triangular_films(const Cluster& c);
+/// The triangular and the two-sided films.
+std::vector<Junction> collapsible_films(const Cluster& c);
 
 class TopologyWatch {
   public:

@@ -186,6 +186,74 @@ T.assert_equal(#c:triple_lines(), lines0 + 2, "T1 after the inverse: one line go
 T.assert_true(again.energy_after < inv.energy_after, "the film has less energy than the line here",
               ("%.9g -> %.9g"):format(inv.energy_after, again.energy_after))
 
+-- 4c. A T1 on a side of a triangular film leaves a two-sided film (a lens between two
+-- quadruple points); its collapse takes the film and ends where the triangle's inverse T1 does:
+-- the same cells meet, across as many films, lines and quadruple points.
+c:refine() -- the T1's triangle is one facet; a T1 on its side would empty it
+local tri = c:info().surfaces
+--- The pairs of cells that share a film ("2|5"; 0 the outside), each once, sorted.
+local function contacts(k)
+  local sides, met = {}, {}
+  for b, faces in ipairs(k:bodies()) do
+    for _, s in ipairs(faces) do
+      local i = math.abs(math.tointeger(s))
+      sides[i] = sides[i] or {}
+      table.insert(sides[i], b)
+    end
+  end
+  for _, cells in pairs(sides) do
+    local a, b = cells[1], cells[2] or 0
+    met[math.min(a, b) .. "|" .. math.max(a, b)] = true
+  end
+  local out = {}
+  for key in pairs(met) do out[#out + 1] = key end
+  table.sort(out)
+  return table.concat(out, " ")
+end
+local direct = c:clone()
+direct:t1_inverse(tri)
+local side
+for i, tl in ipairs(c:triple_lines()) do
+  for _, s in ipairs(tl.surfaces) do if s == tri then side = side or i end end
+end
+local lens_cluster = c:clone()
+local t1_side = lens_cluster:t1(side)
+T.assert_true(t1_side.cells[1] <= 3 and t1_side.cells[2] <= 3, "the side's T1 joins two wedges",
+              table.concat(t1_side.cells, ","))
+local border = 0
+for _, tl in ipairs(lens_cluster:triple_lines()) do
+  for _, s in ipairs(tl.surfaces) do if s == tri then border = border + 1 end end
+end
+T.assert_equal(border, 2, "the triangle has become a two-sided film")
+T.check_error("t1_inverse: surface " .. tri .. " has 2 triple lines on its border, not three",
+              lens_cluster.t1_inverse, lens_cluster, tri)
+T.check_error("collapse_two_sided_film: surface 1 has 4 triple lines on its border, not two",
+              lens_cluster.collapse_two_sided_film, lens_cluster, 1)
+T.check_error("surface 99 does not exist", lens_cluster.collapse_two_sided_film, lens_cluster, 99)
+local lens = lens_cluster:collapse_two_sided_film(tri)
+T.assert_equal(lens.surface, tri, "collapse_two_sided_film: which film")
+T.assert_true(lens.where:find("two-sided film " .. tri, 1, true) ~= nil, "where names it", lens.where)
+T.assert_near(lens.energy_after, lens_cluster:energy(), 1e-12, "energy_after")
+T.assert_equal(#lens_cluster:quadruple_points(), #direct:quadruple_points(),
+               "as many quadruple points as after the inverse T1")
+T.assert_equal(#lens_cluster:triple_lines(), #direct:triple_lines(), "as many triple lines")
+T.assert_equal(lens_cluster:info().surfaces, direct:info().surfaces, "as many films")
+T.assert_equal(contacts(lens_cluster), contacts(direct), "the same cells meet")
+T.assert_true(contacts(lens_cluster) ~= contacts(c), "and not those of before")
+for b = 1, 5 do
+  T.assert_true(math.abs(lens_cluster:volumes()[b] - V0[b]) < 0.02 * V0[b],
+                "body " .. b .. " keeps its volume", tostring(lens_cluster:volumes()[b]))
+end
+for _, q in ipairs(lens_cluster:quadruple_points()) do
+  local at = lens_cluster:edges{where = function(e)
+    return e.triple_line and (e.vertices[1] == q or e.vertices[2] == q)
+  end}
+  T.assert_equal(#at, 4, "quadruple point " .. q .. " meets four triple-line edges")
+end
+T.assert_true(math.abs(lens.energy_after - lens.energy_before) < 1e-3 * lens.energy_before,
+              "the collapse of a small lens changes the energy by little",
+              ("%.9g -> %.9g"):format(lens.energy_before, lens.energy_after))
+
 local blocked = band()
 local rb = blocked:evolve{flow = "sd", tau = 1e-3, T = 0.03, progress = false, transitions = false}
 T.assert_equal(rb.event and rb.event.kind, "collapsing edge", "without transitions the axis collapses")
