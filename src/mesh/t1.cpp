@@ -179,8 +179,10 @@ void T1::place_corners(double side) {
 }
 
 /// The positions after the T1: c's, then the three corners at the largest side from
-/// first_side() down, halving, to the line's length or smallest_side that turns no facet
-/// over (where the mesh beside the line is finer than the film would be).
+/// first_side() down, halving, to an eighth of the line's length or smallest_side, that turns
+/// no facet over (where the mesh beside the line is finer than the film would be). A side
+/// below the line's length is due for an inverse T1 if it shrinks, but a refused T1 stops the
+/// run at the collapsing line.
 std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
     const double smallest = std::max(0.125 * length_, smallest_side_);
     int turned = -1;

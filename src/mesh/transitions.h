@@ -55,8 +55,8 @@ Cluster pop_body(const Cluster& c, int body, TransitionRecord* record = nullptr)
 /// in the plane through the line's midpoint normal to it, at distance side / sqrt(3) from
 /// it, side = the largest of the line's length, half the mean length of the edges at a and
 /// b, and min_side, or where that would turn a facet beside the line over (the mesh there
-/// finer than the film), that side halved until none turns, but not below the line's length
-/// or smallest_side; its edges are new triple lines (D, E, A), (D, E, B), (D, E, C). The line's
+/// finer than the film), that side halved until none turns, but not below an eighth of the
+/// line's length or smallest_side; its edges are new triple lines (D, E, A), (D, E, B), (D, E, C). The line's
 /// films lose it (their facets along it go); each film of D at a and of E at b is split at a
 /// and b between two of the new corners. The new film takes the tension, anisotropy and
 /// mobility of the first film of D at a, and is the last surface; bodies, their reference and
