@@ -243,7 +243,7 @@ int l_collapse_two_sided_film(lua_State* L) {
                          });
 }
 
-/// The one length option of c:collapse_edges / c:split_edges, positive and finite.
+/// The one length option of c:split_edges, positive and finite.
 double edge_length_option(lua_State* L, const char* op, const char* key) {
     Options o(L, 2, op);
     const double length = o.number(key);
@@ -253,8 +253,8 @@ double edge_length_option(lua_State* L, const char* op, const char* key) {
     return length;
 }
 
-/// c:collapse_edges / c:split_edges: one length option, one upkeep pass that returns a new
-/// cluster (or none) and a count; the result is {<what> = count, vertices}.
+/// c:split_edges: one length option, one upkeep pass that returns a new cluster (or none) and
+/// a count; the result is {<what> = count, vertices}.
 template <class Upkeep>
 int edge_upkeep(lua_State* L, const char* op, const char* key, const char* what, Upkeep upkeep) {
     ClusterHandle& h = self(L);
@@ -273,13 +273,38 @@ int edge_upkeep(lua_State* L, const char* op, const char* key, const char* what,
     });
 }
 
-/// c:collapse_edges{shorter_than} -> {collapsed, vertices}: Evolver's `t`.
+/// c:collapse_edges{shorter_than, needles, valence_three} -> {collapsed, vertices}: Evolver's
+/// `t`, with the short sides of needles and film vertices of three neighbours.
 int l_collapse_edges(lua_State* L) {
-    return edge_upkeep(L, "collapse_edges", "shorter_than", "collapsed",
-                       [](const Cluster& c, double l) {
-                           EdgeCollapseResult r = collapse_short_edges(c, l);
-                           return std::make_pair(std::move(r.cluster), r.collapsed);
-                       });
+    ClusterHandle& h = self(L);
+    Options o(L, 2, "collapse_edges");
+    EdgeCollapseCriteria criteria;
+    const bool by_length = o.has("shorter_than"), by_angle = o.has("needles");
+    const bool any = by_length || by_angle || o.has("valence_three");
+    criteria.min_length = o.number("shorter_than", 0);
+    criteria.needle_angle = o.number("needles", 0);
+    criteria.valence_three = o.boolean("valence_three", false);
+    o.finish();
+    if (!any)
+        return luaL_error(L, "collapse_edges: give shorter_than, needles or valence_three");
+    if (by_length && !(std::isfinite(criteria.min_length) && criteria.min_length > 0))
+        return luaL_error(L, "collapse_edges: shorter_than must be positive and finite, got %f",
+                          criteria.min_length);
+    if (by_angle && !(criteria.needle_angle > 0 && criteria.needle_angle < 60))
+        return luaL_error(L, "collapse_edges: needles must be an angle in (0, 60) degrees, got %f",
+                          criteria.needle_angle);
+    ChangeGuard changing(L, h, "collapse_edges");
+    return guarded(L, [&] {
+        EdgeCollapseResult r = collapse_edges(h.cluster, criteria);
+        if (r.cluster) {
+            h.cluster = std::move(*r.cluster);
+            h.stepper.reset();
+        }
+        lua_createtable(L, 0, 2);
+        set_integer(L, "collapsed", r.collapsed);
+        set_integer(L, "vertices", h.cluster.n_vertices());
+        return 1;
+    });
 }
 
 /// c:split_edges{longer_than} -> {split, vertices}: Evolver's `l`.

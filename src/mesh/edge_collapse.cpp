@@ -42,33 +42,25 @@ std::vector<int> vertex_ranks(const Cluster& c) {
 
 struct Candidate {
     double length;
-    int a, b; // a < b
-};
-
-/// Which edges a pass tries: those shorter than min_length, and with needle_angle > 0 the
-/// short side of every needle, a facet with a corner below needle_angle degrees whose shortest
-/// side is below half its middle one (a cap, whose small angle has no short side opposite,
-/// is the flips' business).
-struct CollapseCriteria {
-    double min_length = 0;
-    double needle_angle = 0;
+    int a, b;       // a < b
+    int keep = -1;  // the end that keeps its place, if not the one of higher rank
 };
 
 class Collapser {
   public:
-    Collapser(const Cluster& c, CollapseCriteria criteria) : c_(c), criteria_(criteria) {}
+    Collapser(const Cluster& c, EdgeCollapseCriteria criteria) : c_(c), criteria_(criteria) {}
     /// One pass; the number of edges collapsed (0: the spec is not needed).
     int pass();
     ClusterSpec& spec() { return spec_; }
     const std::vector<Vec3>& positions() const { return X_; }
 
   private:
-    std::vector<Candidate> short_edges() const;
+    std::vector<Candidate> candidates() const;
     bool collapse(const Candidate& e);
     bool link_condition(int a, int b) const;
 
     const Cluster& c_;
-    const CollapseCriteria criteria_;
+    const EdgeCollapseCriteria criteria_;
     ClusterSpec spec_;
     std::vector<Vec3> X_;
     std::vector<int> rank_;
@@ -93,7 +85,7 @@ int needle_side(const std::array<Vec3, 3>& x, double needle_angle) {
     return angle < needle_angle ? k : -1;
 }
 
-std::vector<Candidate> Collapser::short_edges() const {
+std::vector<Candidate> Collapser::candidates() const {
     std::map<std::pair<int, int>, double> length;
     for (int si = 0; si < c_.n_surfaces(); ++si) {
         const Surface& s = c_.surface(si);
@@ -110,6 +102,15 @@ std::vector<Candidate> Collapser::short_edges() const {
     }
     std::vector<Candidate> out;
     for (const auto& [e, l] : length) out.push_back({l, e.first, e.second});
+    if (criteria_.valence_three) // onto the neighbour of highest rank, which stays; first
+        for (int v = 0; v < c_.n_vertices(); ++v)
+            if (rank_[v] == 0 && neighbours_[v].size() == 3) {
+                const auto& n = neighbours_[v];
+                const int w = *std::max_element(n.begin(), n.end(), [&](int x, int y) {
+                    return rank_[x] < rank_[y];
+                });
+                if (rank_[w] >= 0) out.push_back({0, std::min(v, w), std::max(v, w), w});
+            }
     std::sort(out.begin(), out.end(), [](const Candidate& x, const Candidate& y) {
         return x.length < y.length;
     });
@@ -137,11 +138,12 @@ bool Collapser::collapse(const Candidate& e) {
     const bool along_line = junction_.count({e.a, e.b}) > 0;
     if (along_line ? (ra == 2 && rb == 2) : (ra > 0 && rb > 0)) return false;
     if (!link_condition(e.a, e.b)) return false;
-    // keep the vertex of higher rank; equal ranks meet halfway
-    const int keep = ra >= rb ? e.a : e.b, gone = keep == e.a ? e.b : e.a;
+    // keep the vertex of higher rank (or the candidate's); equal ranks meet halfway
+    const int keep = e.keep >= 0 ? e.keep : ra >= rb ? e.a : e.b;
+    const int gone = keep == e.a ? e.b : e.a;
     const Vec3 shift = c_.edge_shift(keep, gone); // gone's image next to keep
     const Offset d = surgery::lattice_offset(c_, X_[gone] + shift, X_[gone]);
-    const Vec3 target = ra == rb ? 0.5 * (X_[keep] + X_[gone] + shift) : X_[keep];
+    const Vec3 target = ra == rb && e.keep < 0 ? 0.5 * (X_[keep] + X_[gone] + shift) : X_[keep];
 
     // the facets at either end after the collapse: none may turn over
     struct Change {
@@ -209,7 +211,7 @@ int Collapser::pass() {
         if (line.closed && line.vertices.size() <= 3)
             for (int v : line.vertices) rank_[v] = -1;
     int made = 0;
-    for (const Candidate& e : short_edges()) made += collapse(e);
+    for (const Candidate& e : candidates()) made += collapse(e);
     if (!made) return 0;
     std::sort(removed_facets_.begin(), removed_facets_.end());
     for (auto it = removed_facets_.rbegin(); it != removed_facets_.rend(); ++it) {
@@ -222,9 +224,7 @@ int Collapser::pass() {
 
 } // namespace
 
-namespace {
-
-EdgeCollapseResult collapse_edges(const Cluster& c, CollapseCriteria criteria) {
+EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& criteria) {
     EdgeCollapseResult r;
     Collapser collapser(c, criteria);
     r.collapsed = collapser.pass();
@@ -238,14 +238,8 @@ EdgeCollapseResult collapse_edges(const Cluster& c, CollapseCriteria criteria) {
     return r;
 }
 
-} // namespace
-
 EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length) {
-    return collapse_edges(c, {min_length, 0});
-}
-
-EdgeCollapseResult collapse_needles(const Cluster& c, double max_angle) {
-    return collapse_edges(c, {0, max_angle});
+    return collapse_edges(c, {min_length});
 }
 
 } // namespace froth

@@ -121,11 +121,21 @@ struct EdgeCollapseResult {
 /// Materials, time and the bodies' reference and target volumes are kept.
 EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length);
 
-/// Evolver's `w` for needles: collapses the short side of each facet with a corner angle below
-/// max_angle degrees whose shortest side is below half its middle one (a needle; a flat cap
-/// has no short side and is left to the flips), under the rules of collapse_short_edges: a
-/// needle whose short side joins two junctions across a film, or two quadruple points, stays.
-EdgeCollapseResult collapse_needles(const Cluster& c, double max_angle);
+/// Which edges collapse_edges tries, in one pass, under the rules of collapse_short_edges.
+struct EdgeCollapseCriteria {
+    double min_length = 0; ///< edges shorter than this (Evolver's `t`)
+    /// With needle_angle > 0, the short side of every needle: a facet with a corner below
+    /// needle_angle degrees whose shortest side is below half its middle one (a flat cap has
+    /// no short side and is left to the flips), such as a film's corner squeezed against a
+    /// quadruple point.
+    double needle_angle = 0;
+    /// Film vertices with three neighbours collapse onto the neighbour of highest rank (their
+    /// three facets become the triangle of the neighbours). Such a vertex beside a triple line,
+    /// joined to both its ends, breaks the link condition there, so the line could neither
+    /// collapse nor make a T1 ("it would fold surface 689 over the point").
+    bool valence_three = false;
+};
+EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& criteria);
 
 struct EdgeSplitResult {
     std::optional<Cluster> cluster; ///< none when nothing was split

@@ -250,7 +250,7 @@ class Run {
             if (e->kind == "vanishing body" && pop(*e)) continue;
             if (e->kind == "collapsing edge" &&
                 (collapse_edges() || transition_junction(true, true) ||
-                 transition_junction(false, true)))
+                 transition_junction(false, true) || remove_valence_three()))
                 continue;
             if (e->kind == "collapsing facet" && (flip_edges() || collapse_needles())) continue;
             break;
@@ -320,12 +320,26 @@ class Run {
         return true;
     }
 
+    /// Mesh upkeep for a collapsing edge that neither collapses nor transitions cleared: film
+    /// vertices of three neighbours go (one beside a line, joined to both its ends, keeps the
+    /// line from collapsing in a T1).
+    bool remove_valence_three() {
+        EdgeCollapseCriteria lone;
+        lone.valence_three = true;
+        EdgeCollapseResult collapsed = froth::collapse_edges(c_, lone);
+        if (!collapsed.cluster) return false;
+        r_.collapsed_edges += collapsed.collapsed;
+        replace_cluster(std::move(*collapsed.cluster), false);
+        return true;
+    }
+
     /// Mesh upkeep for a collapsing facet that the flips left after a transition: the short
     /// sides of needles (corners below ten times the watch's angle) collapse.
     bool collapse_needles() {
         if (r_.events.empty()) return false;
-        EdgeCollapseResult collapsed =
-            froth::collapse_needles(c_, 10 * o_.watch.min_facet_angle);
+        EdgeCollapseCriteria needles;
+        needles.needle_angle = 10 * o_.watch.min_facet_angle;
+        EdgeCollapseResult collapsed = froth::collapse_edges(c_, needles);
         if (!collapsed.cluster) return false;
         r_.collapsed_edges += collapsed.collapsed;
         replace_cluster(std::move(*collapsed.cluster), false);

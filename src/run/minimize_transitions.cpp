@@ -46,15 +46,21 @@ std::optional<std::string> sliver_left(const Cluster& c) {
     return e->message.substr(0, e->message.rfind(" at t = "));
 }
 
-/// Short edges collapse and the films flip to Delaunay; the number of collapses.
+/// Short edges collapse, film vertices of three neighbours go, and the films flip to
+/// Delaunay; the number of collapses.
 int tidy_mesh(Cluster& c, TransitionMinimizeResult& out) {
     EdgeCollapseResult collapsed = collapse_short_edges(c, 0.05 * mean_edge_length(c));
     if (collapsed.cluster) c = std::move(*collapsed.cluster);
     out.collapsed_edges += collapsed.collapsed;
+    EdgeCollapseCriteria valence_three;
+    valence_three.valence_three = true;
+    EdgeCollapseResult lone = collapse_edges(c, valence_three);
+    if (lone.cluster) c = std::move(*lone.cluster);
+    out.collapsed_edges += lone.collapsed;
     EquiangulateResult flipped = equiangulate(c);
     if (flipped.cluster) c = std::move(*flipped.cluster);
     out.flipped_edges += flipped.flips;
-    return collapsed.collapsed;
+    return collapsed.collapsed + lone.collapsed;
 }
 
 } // namespace

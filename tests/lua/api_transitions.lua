@@ -354,7 +354,46 @@ if ok_ff then
   T.assert_near(sum_of(ff:volumes()), ff_volume, 1e-12 * ff_volume, "the cells still fill the box")
 end
 T.check_error("split_edges: longer_than must be positive and finite", u.split_edges, u, {longer_than = 0})
-T.check_error("collapse_edges: option 'shorter_than' is required", u.collapse_edges, u, {})
+T.check_error("collapse_edges: give shorter_than, needles or valence_three", u.collapse_edges, u, {})
+T.check_error("collapse_edges: shorter_than must be positive and finite", u.collapse_edges, u,
+              {shorter_than = 0})
+T.check_error("collapse_edges: needles must be an angle in (0, 60) degrees", u.collapse_edges, u,
+              {needles = 90})
+
+-- 5b. Needles and film vertices of three neighbours (evolve's upkeep at a collapsing facet and
+-- at a collapsing edge no transition could clear): an octahedron with one facet split at its
+-- centroid (vertex 7, three neighbours) and one edge split next to its end (vertex 8, 1/50 of
+-- the edge from vertex 1: two needles of corner 1 degree).
+local function octahedron()
+  local P = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}
+  local F = {{1, 3, 5}, {3, 2, 5}, {2, 4, 5}, {4, 1, 5}, {3, 1, 6}, {2, 3, 6}, {4, 2, 6}, {1, 4, 6}}
+  return P, F
+end
+local P, F = octahedron()
+P[7] = {-1 / 3, -1 / 3, 1 / 3}                  -- centroid of facet {2, 4, 5}
+P[8] = {0.98, 0.02, 0}                          -- on edge 1-3, next to vertex 1
+local split = {{3, 2, 5}, {4, 1, 5}, {2, 3, 6}, {4, 2, 6}, {1, 4, 6},
+               {2, 4, 7}, {4, 5, 7}, {5, 2, 7},  -- facet {2, 4, 5} around vertex 7
+               {1, 8, 5}, {8, 3, 5}, {8, 1, 6}, {3, 8, 6}} -- the facets at edge 1-3, split at 8
+local o = froth.cluster{vertices = P, surfaces = {split}, bodies = {{1}}}
+local P6 = octahedron()
+local plain = froth.cluster{vertices = P6, surfaces = {F}, bodies = {{1}}}
+T.assert_equal(plain:collapse_edges{needles = 5, valence_three = true}.collapsed, 0,
+               "a plain octahedron has neither")
+local V7, A7 = o:volumes()[1], o:area()
+local v3 = o:collapse_edges{valence_three = true}
+T.assert_equal(v3.collapsed, 1, "the vertex of three neighbours goes")
+T.assert_equal(v3.vertices, 7, "one vertex less")
+T.assert_near(o:volumes()[1], V7, 1e-14, "it lay in its facets' plane: the volume stays")
+T.assert_near(o:area(), A7, 1e-14, "and the area")
+T.assert_true(o:report().mesh.min_angle < 1.1, "the needles are still there",
+              tostring(o:report().mesh.min_angle))
+local nd = o:collapse_edges{needles = 5}
+T.assert_equal(nd.collapsed, 1, "one edge is both needles' short side")
+T.assert_equal(nd.vertices, 6, "the octahedron's vertices are left")
+T.assert_true(o:report().mesh.min_angle > 40, "no needle is left", tostring(o:report().mesh.min_angle))
+T.assert_near(o:volumes()[1], plain:volumes()[1], 0.02 * plain:volumes()[1],
+              "the two film vertices met halfway, 1/100 of the edge from vertex 1")
 T.check_error("collapse_edges: unknown option 'x'", u.collapse_edges, u, {shorter_than = 1, x = 1})
 
 -- errors
