@@ -186,4 +186,22 @@ function M.standard_double_bubble(V1, V2)
   return {area = area * s * s, r1 = s, r2 = k * s, r3 = r3 * s, p1 = 2 / s, p2 = 2 / (k * s)}
 end
 
+--- The MacPherson-Srolovitz residuals of one MCF step of tau from `before` to `after`, two
+--- c:grain_measures() of the same bodies: per grain |dV/dt - law| / (2 pi L), with dV/dt the
+--- volume change over tau and law = -2 pi (L - e / 6) at the mean of the two states' mean
+--- widths L and triple-line lengths e (normal velocity kappa, the sum of the principal
+--- curvatures). `sixth` replaces 1/6 (to show that the law discriminates).
+function M.macpherson_srolovitz(before, after, tau, sixth)
+  assert(#before == #after, "macpherson_srolovitz: the same bodies before and after")
+  sixth = sixth or 1 / 6
+  local out = {}
+  for b, g in ipairs(after) do
+    local L = 0.5 * (before[b].mean_width + g.mean_width)
+    local lines = 0.5 * (before[b].line_length + g.line_length)
+    local rate = (g.volume - before[b].volume) / tau
+    out[b] = math.abs(rate + 2 * math.pi * (L - sixth * lines)) / (2 * math.pi * L)
+  end
+  return out
+end
+
 return M

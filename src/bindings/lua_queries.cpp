@@ -1,7 +1,8 @@
 // froth.Cluster queries and edits (issue 14, item 4): c:vertices{where}, c:facets{where},
 // c:edges{where} list elements with their attributes, filtered by a Lua predicate, as Evolver's
 // `list vertex where ...`; c:set_vertex moves one vertex; c:fix, c:unfix and c:fixed hold
-// vertices in place (Evolver's `fix vertex where ...`). Ids are 1-based here.
+// vertices in place (Evolver's `fix vertex where ...`); c:grain_measures gives each body's
+// mean width and triple-line length. Ids are 1-based here.
 #include "bindings/lua_queries.h"
 
 #include "bindings/lua_cluster.h"
@@ -240,10 +241,30 @@ int l_fixed(lua_State* L) {
     return 1;
 }
 
+/// c:grain_measures() -> {{body, volume, area, mean_width, line_length}, ...}
+int l_grain_measures(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    return guarded(L, [&] {
+        const std::vector<GrainMeasures> g = grain_measures(c);
+        lua_createtable(L, static_cast<int>(g.size()), 0);
+        for (std::size_t b = 0; b < g.size(); ++b) {
+            lua_createtable(L, 0, 5);
+            set_integer(L, "body", static_cast<lua_Integer>(b + 1));
+            set_number(L, "volume", g[b].volume);
+            set_number(L, "area", g[b].area);
+            set_number(L, "mean_width", g[b].mean_width);
+            set_number(L, "line_length", g[b].line_length);
+            lua_rawseti(L, -2, static_cast<lua_Integer>(b + 1));
+        }
+        return 1;
+    });
+}
+
 const luaL_Reg methods[] = {
     {"vertices", l_vertices},     {"facets", l_facets}, {"edges", l_edges},
     {"set_vertex", l_set_vertex}, {"fix", l_fix},       {"unfix", l_unfix},
-    {"fixed", l_fixed},           {nullptr, nullptr},
+    {"fixed", l_fixed},           {"grain_measures", l_grain_measures},
+    {nullptr, nullptr},
 };
 
 } // namespace

@@ -128,6 +128,19 @@ MeshQuality mesh_quality(const Cluster& c);
 /// (distance to the exact solution (5.5), "computed by a Newton method").
 double distance_to_ellipsoid(const Vec3& x, const Vec3& axes);
 
+/// Per body: what the MacPherson-Srolovitz law of grain growth is written in (mean_width.cpp).
+struct GrainMeasures {
+    double volume = 0;
+    double area = 0;        ///< of the body's boundary
+    /// L(D) = (1 / 2 pi) sum over the boundary's mesh edges of |e| alpha_e, alpha_e the
+    /// exterior angle between the body's outward facet normals there: (1 / 2 pi) (int kappa dA
+    /// + sum over lines of int alpha ds), twice the classical mean breadth (a ball: 4 R)
+    double mean_width = 0;
+    double line_length = 0; ///< the length of the body's triple lines (edges where its surfaces meet)
+};
+/// For MCF with normal velocity kappa and 120-degree lines, dV/dt = -2 pi (L - line_length / 6).
+std::vector<GrainMeasures> grain_measures(const Cluster& c);
+
 /// Sum of principal curvatures per vertex (positive on a sphere with outward normals), from
 /// the discrete Laplacian of the surface with the lowest id at that vertex. For output only.
 std::vector<double> vertex_mean_curvature(const Cluster& c);

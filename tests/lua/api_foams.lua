@@ -79,6 +79,17 @@ do
   local shifted = froth.voronoi_foam{sites = {{0.3, 0.1, 0.2}, {0.3 + 0.5 * c:period()[1][1],
     0.1 + 0.5 * c:period()[1][1], 0.2 + 0.5 * c:period()[1][1]}}, period = c:period(), h = 0.3}
   T.assert_near(shifted:energy(), c:energy(), 1e-12, "Kelvin: translating the sites changes nothing")
+  -- c:grain_measures: Steiner's edge sum over the truncated octahedron's 36 edges of side a,
+  -- 24 between a square and a hexagon (exterior angle acos(1/sqrt 3)), 12 between hexagons
+  -- (acos(1/3)); twice the mean breadth in MacPherson and Srolovitz's normalisation.
+  local a = (1 / (8 * math.sqrt(2))) ^ (1 / 3)
+  local width = a * (24 * math.acos(1 / math.sqrt(3)) + 12 * math.acos(1 / 3)) / (2 * math.pi)
+  for b, g in ipairs(c:grain_measures()) do
+    T.assert_near(g.mean_width, width, 1e-12, "Kelvin: cell " .. b .. "'s mean width across the box")
+    T.assert_near(g.line_length, 36 * a, 1e-12, "Kelvin: cell " .. b .. "'s 36 triple-line edges")
+    T.assert_near(g.volume, 1, 1e-13, "grain_measures: the volume")
+    T.assert_near(g.area, 2 * flat_cost / 2, 1e-12, "grain_measures: the cell's own area")
+  end
   c:write("out/kelvin_flat.vtu")
   local text = io.open("out/kelvin_flat.vtu"):read("a")
   T.assert_true(tonumber(text:match('NumberOfPoints="(%d+)"')) > info.vertices,
@@ -363,5 +374,27 @@ T.check_error("foam: lloyd must be an integer >= 0 and at most 10000, got 20000"
 T.check_error("voronoi_foam: option 'lloyd' must be a count of steps from 0 to 10000", froth.voronoi_foam,
               {sites = {{0, 0, 0}, {0.5, 0.5, 0.5}}, period = unit, h = 0.3, lloyd = -2})
 T.check_error("voronoi_cells: option 'period' is required", froth.voronoi_cells, {sites = {{0, 0, 0}}})
+
+-- c:grain_measures off the box: two unit cubes (mean width 3, twice the cube's 3/2; the four
+-- edges of their shared face are their triple lines) and a ball (4 R as the mesh is refined).
+do
+  local b = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
+  for i, g in ipairs(b:grain_measures()) do
+    T.assert_near(g.mean_width, 3, 1e-13, "cube " .. i .. ": mean width")
+    T.assert_near(g.line_length, 4, 1e-13, "cube " .. i .. ": the shared face's four edges")
+    T.assert_near(g.area, 6, 1e-13, "cube " .. i .. ": area")
+  end
+  local errors = {}
+  for level = 2, 4 do
+    local s = froth.sphere{levels = level}
+    local g = s:grain_measures()[1]
+    local R = (3 * g.volume / (4 * math.pi)) ^ (1 / 3)
+    errors[#errors + 1] = math.abs(g.mean_width / (4 * R) - 1)
+    T.assert_equal(g.line_length, 0, "a ball has no triple lines")
+  end
+  T.assert_true(errors[3] < 2e-3 and errors[3] < errors[2] and errors[2] < errors[1],
+                "a ball's mean width converges to 4 R", table.concat(errors, " "))
+  T.assert_equal(#froth.sphere{levels = 1}:clone():grain_measures(), 1, "one body, one record")
+end
 T.check_error("two sites coincide", froth.voronoi_cells, {sites = {{0, 0, 0}, {1, 1, 1}}, period = unit})
 T.summary()
