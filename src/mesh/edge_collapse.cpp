@@ -56,6 +56,7 @@ class Collapser {
 
   private:
     std::vector<Candidate> candidates() const;
+    void corner_lines(int a, int b, double length, std::vector<Candidate>& out) const;
     bool collapse(const Candidate& e);
     bool link_condition(int a, int b) const;
 
@@ -101,7 +102,10 @@ std::vector<Candidate> Collapser::candidates() const {
         }
     }
     std::vector<Candidate> out;
-    for (const auto& [e, l] : length) out.push_back({l, e.first, e.second});
+    for (const auto& [e, l] : length) {
+        out.push_back({l, e.first, e.second});
+        corner_lines(e.first, e.second, l, out);
+    }
     if (criteria_.valence_three) // onto the neighbour of highest rank, which stays; first
         for (int v = 0; v < c_.n_vertices(); ++v)
             if (rank_[v] == 0 && neighbours_[v].size() == 3) {
@@ -115,6 +119,17 @@ std::vector<Candidate> Collapser::candidates() const {
         return x.length < y.length;
     });
     return out;
+}
+
+/// A short edge (a, b) across a film between two triple lines that leave one quadruple point q
+/// (a film's corner squeezed at q) cannot collapse, but the lines' first edges (a, q) and
+/// (b, q) can: they go onto q, and the corner's facet grows to the lines' next vertices.
+void Collapser::corner_lines(int a, int b, double length, std::vector<Candidate>& out) const {
+    if (rank_[a] != 1 || rank_[b] != 1 || junction_.count({a, b})) return;
+    for (int q : neighbours_[a])
+        if (rank_[q] == 2 && neighbours_[b].count(q) && junction_.count(std::minmax(a, q)) &&
+            junction_.count(std::minmax(b, q)))
+            for (int v : {a, b}) out.push_back({length, std::min(v, q), std::max(v, q)});
 }
 
 /// The common neighbours of a and b are exactly the corners opposite the edge.

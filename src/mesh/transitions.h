@@ -116,7 +116,9 @@ struct EdgeCollapseResult {
 /// disjoint neighbourhoods (shortest first), without changing the topology: an edge inside a
 /// film whose ends both lie on junctions, one between two quadruple points, one of a closed
 /// triple line of three edges, edges at walls, wires, fixed or curve vertices, and collapses
-/// that break the link condition or would turn a facet over are left. The end of higher rank
+/// that break the link condition or would turn a facet over are left. An edge across a film
+/// between two triple lines that leave one quadruple point q (a film's corner squeezed at q)
+/// has the lines' first edges collapse onto q instead. The end of higher rank
 /// (film < triple line < quadruple point) keeps its place, equal ranks meet halfway.
 /// Materials, time and the bodies' reference and target volumes are kept.
 EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length);
