@@ -396,6 +396,56 @@ T.assert_near(o:volumes()[1], plain:volumes()[1], 0.02 * plain:volumes()[1],
               "the two film vertices met halfway, 1/100 of the edge from vertex 1")
 T.check_error("collapse_edges: unknown option 'x'", u.collapse_edges, u, {shorter_than = 1, x = 1})
 
+
+-- 5c. A film's corner squeezed at a quadruple point: four cells around a tetrahedron's centre q
+-- (six inner films, each with its two lines from q bent at their midpoints), and line 2's first
+-- vertex turned towards line 1's, so that the edge across film 1|2 between them is shorter
+-- than the limit. That edge cannot collapse (it would join two lines); the lines' first edges can.
+do
+  local v = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}
+  local P = {v[1], v[2], v[3], v[4], {0, 0, 0}}
+  -- the lines bend a little at their midpoints (so no facet lies along a line)
+  local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
+  for i = 1, 4 do
+    P[5 + i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
+  end
+  local q, m = 5, function(i) return 5 + i end
+  local surfaces, film = {}, {}
+  for i = 1, 4 do for j = i + 1, 4 do
+    surfaces[#surfaces + 1] = {{q, m(i), m(j)}, {m(i), i, j}, {m(i), j, m(j)}}
+    film[i .. j] = #surfaces
+  end end
+  local bodies = {}
+  for k = 1, 4 do -- the cell opposite vertex k: the outer face of the other three
+    local o = {}
+    for i = 1, 4 do if i ~= k then o[#o + 1] = i end end
+    surfaces[#surfaces + 1] = {{o[1], o[2], o[3]}}
+    bodies[k] = {#surfaces, film[o[1] .. o[2]], film[o[1] .. o[3]], film[o[2] .. o[3]]}
+  end
+  local c = froth.cluster{vertices = P, surfaces = surfaces, bodies = bodies}
+  -- squeeze film 1|2's corner at the centre: line 2's first vertex turned towards line 1's at
+  -- its distance from the centre, the edge between them now 0.083 against 0.6-0.9 for the rest
+  local a, b = P[m(1)], P[m(2)]
+  local ra, rb = math.sqrt(a[1]^2 + a[2]^2 + a[3]^2), math.sqrt(b[1]^2 + b[2]^2 + b[3]^2)
+  local u = {a[1] / ra, a[2] / ra, a[3] / ra}
+  local w = {b[1] - rb * u[1], b[2] - rb * u[2], b[3] - rb * u[3]} -- b's part across u
+  local wn = math.sqrt(w[1]^2 + w[2]^2 + w[3]^2)
+  local s = 0.03 / rb -- the sine of the squeezed angle
+  local cs = math.sqrt(1 - s * s)
+  c:set_vertex(m(2), {rb * (cs * u[1] + s * w[1] / wn), rb * (cs * u[2] + s * w[2] / wn),
+                      rb * (cs * u[3] + s * w[3] / wn)})
+  T.assert_true(c:report().mesh.min_angle < 2, "the corner is a sliver", tostring(c:report().mesh.min_angle))
+  local quads, lines = #c:quadruple_points(), #c:triple_lines()
+  local r = c:collapse_edges{shorter_than = 0.1}
+  T.assert_equal(r.collapsed, 1, "a line's first edge collapses onto q")
+  T.assert_equal(r.vertices, 8, "one vertex less")
+  T.assert_equal(#c:quadruple_points(), quads, "every quadruple point stays")
+  T.assert_equal(#c:triple_lines(), lines, "and every line")
+  local shortest = math.huge
+  for _, e in ipairs(c:edges()) do shortest = math.min(shortest, e.length) end
+  T.assert_true(shortest > 0.5, "no short edge is left", tostring(shortest))
+end
+
 -- errors
 local db = froth.double_bubble{h = 0.3}
 T.check_error("t1: triple line 1 is a closed loop", db.t1, db, 1)
