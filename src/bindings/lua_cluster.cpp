@@ -452,6 +452,7 @@ int l_evolve(lua_State* L) {
         set_integer(L, "collapsed_edges", r.collapsed_edges);
         set_integer(L, "split_edges", r.split_edges);
         set_integer(L, "flipped_edges", r.flipped_edges);
+        set_integer(L, "relaxed_vertices", r.relaxed_vertices);
         lua_pushstring(L, r.stop_reason.c_str());
         lua_setfield(L, -2, "stop_reason");
         if (r.event) {

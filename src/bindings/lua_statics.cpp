@@ -37,6 +37,7 @@ void push_minimize_result(lua_State* L, const MinimizeResult& r,
     set_integer(L, "rounds", t->rounds);
     set_integer(L, "collapsed_edges", t->collapsed_edges);
     set_integer(L, "flipped_edges", t->flipped_edges);
+    set_integer(L, "relaxed_vertices", t->relaxed_vertices);
     push_transition_events(L, t->events);
     lua_setfield(L, -2, "events");
 }
@@ -307,6 +308,30 @@ int l_collapse_edges(lua_State* L) {
     });
 }
 
+/// c:relax_flat_corners{angle} -> {moved}: flat caps' corners move in their tangent planes.
+int l_relax_flat_corners(lua_State* L) {
+    ClusterHandle& h = self(L);
+    Options o(L, 2, "relax_flat_corners", true);
+    const double angle = o.number("angle", 5);
+    o.finish();
+    if (!(angle > 0 && angle < 60))
+        return luaL_error(L, "relax_flat_corners: angle must be in (0, 60) degrees, got %f", angle);
+    ChangeGuard changing(L, h, "relax_flat_corners");
+    return guarded(L, [&] {
+        VertexRelaxResult r = relax_flat_corners(h.cluster, angle);
+        double change = 0;
+        if (r.cluster) {
+            change = volume_change(h.cluster, *r.cluster);
+            h.cluster = std::move(*r.cluster);
+            h.stepper.reset();
+        }
+        lua_createtable(L, 0, 2);
+        set_integer(L, "moved", r.moved);
+        set_number(L, "volume_change", change);
+        return 1;
+    });
+}
+
 /// c:split_edges{longer_than} -> {split, vertices}: Evolver's `l`.
 int l_split_edges(lua_State* L) {
     return edge_upkeep(L, "split_edges", "longer_than", "split", [](const Cluster& c, double l) {
@@ -350,6 +375,7 @@ const luaL_Reg methods[] = {
     {"collapse_two_sided_film", l_collapse_two_sided_film},
     {"collapse_edges", l_collapse_edges},
     {"split_edges", l_split_edges},
+    {"relax_flat_corners", l_relax_flat_corners},
     {"minimize", l_minimize},
     {"pressures", l_pressures},
     {"body_report", l_body_report},

@@ -23,23 +23,6 @@
 namespace froth {
 namespace {
 
-/// 0: inside one film, 1: on a triple line, 2: a quadruple point, -1: held (a wall, a wire,
-/// a fixed or curve vertex, or another junction).
-std::vector<int> vertex_ranks(const Cluster& c) {
-    std::vector<int> rank(c.n_vertices(), -1);
-    for (int v = 0; v < c.n_vertices(); ++v) {
-        if (c.is_fixed(v) || c.curve_point(v) || !c.vertex_walls(v).empty()) continue;
-        const std::size_t surfaces = c.pair_begin(v + 1) - c.pair_begin(v);
-        const std::size_t lines = c.vertex_junction_edges(v).size();
-        if (surfaces == 1 && lines == 0) rank[v] = 0;
-        else if (surfaces == 3 && lines == 2) rank[v] = 1;
-        else if (surfaces == 6 && lines == 4) rank[v] = 2;
-    }
-    for (const BoundaryEdge& e : c.boundary_edges()) rank[e.a] = rank[e.b] = -1;
-    for (const BoundaryEdge& e : c.wire_edges()) rank[e.a] = rank[e.b] = -1;
-    return rank;
-}
-
 struct Candidate {
     double length;
     int a, b;       // a < b
@@ -73,17 +56,20 @@ class Collapser {
     std::vector<int> facets_left_;                            // per surface, after the drops
 };
 
-/// The index k of the needle side (corners k, k + 1) of the triangle x, or -1.
-int needle_side(const std::array<Vec3, 3>& x, double needle_angle) {
+/// The index k of the shortest side (corners k, k + 1) of the triangle x if one of its corners
+/// is below `angle` degrees, else -1: a needle's short side, or for a flat cap the side from
+/// its flat corner to the nearer end of its long side (the flips' business inside a film, but
+/// not where the long side is a triple line).
+int thin_facet_side(const std::array<Vec3, 3>& x, double angle) {
     std::array<double, 3> l;
     for (int k = 0; k < 3; ++k) l[k] = (x[(k + 1) % 3] - x[k]).norm();
-    const int k = static_cast<int>(std::min_element(l.begin(), l.end()) - l.begin());
-    const double middle = std::min(l[(k + 1) % 3], l[(k + 2) % 3]);
-    if (!(l[k] < 0.5 * middle)) return -1;
-    // the angle opposite the shortest side is the smallest
-    const Vec3 u = x[k] - x[(k + 2) % 3], w = x[(k + 1) % 3] - x[(k + 2) % 3];
-    const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
-    return angle < needle_angle ? k : -1;
+    double smallest = 180;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 u = x[(k + 1) % 3] - x[k], w = x[(k + 2) % 3] - x[k];
+        smallest = std::min(smallest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
+    }
+    if (!(smallest < angle)) return -1;
+    return static_cast<int>(std::min_element(l.begin(), l.end()) - l.begin());
 }
 
 std::vector<Candidate> Collapser::candidates() const {
@@ -93,7 +79,7 @@ std::vector<Candidate> Collapser::candidates() const {
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
             const auto x = s.corners(c_.positions(), f);
             const int needle =
-                criteria_.needle_angle > 0 ? needle_side(x, criteria_.needle_angle) : -1;
+                criteria_.needle_angle > 0 ? thin_facet_side(x, criteria_.needle_angle) : -1;
             for (int k = 0; k < 3; ++k) {
                 const double l = (x[(k + 1) % 3] - x[k]).norm();
                 if (l < criteria_.min_length || k == needle)
@@ -205,7 +191,7 @@ bool Collapser::collapse(const Candidate& e) {
 int Collapser::pass() {
     spec_ = cluster_spec(c_);
     X_ = c_.positions();
-    rank_ = vertex_ranks(c_);
+    rank_ = surgery::vertex_ranks(c_);
     neighbours_.assign(c_.n_vertices(), {});
     facets_at_.assign(c_.n_vertices(), {});
     touched_.assign(c_.n_vertices(), 0);

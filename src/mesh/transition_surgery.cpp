@@ -77,6 +77,21 @@ void check_one_fan(const std::vector<std::pair<int, int>>& link, int surface,
                             "first");
 }
 
+std::vector<int> vertex_ranks(const Cluster& c) {
+    std::vector<int> rank(c.n_vertices(), -1);
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        if (c.is_fixed(v) || c.curve_point(v) || !c.vertex_walls(v).empty()) continue;
+        const std::size_t surfaces = c.pair_begin(v + 1) - c.pair_begin(v);
+        const std::size_t lines = c.vertex_junction_edges(v).size();
+        if (surfaces == 1 && lines == 0) rank[v] = 0;
+        else if (surfaces == 3 && lines == 2) rank[v] = 1;
+        else if (surfaces == 6 && lines == 4) rank[v] = 2;
+    }
+    for (const BoundaryEdge& e : c.boundary_edges()) rank[e.a] = rank[e.b] = -1;
+    for (const BoundaryEdge& e : c.wire_edges()) rank[e.a] = rank[e.b] = -1;
+    return rank;
+}
+
 bool keeps_its_side(const Vec3& old_area, const std::array<Vec3, 3>& y) {
     const Vec3 area = (y[1] - y[0]).cross(y[2] - y[0]);
     const double scale = std::max({(y[1] - y[0]).squaredNorm(), (y[2] - y[0]).squaredNorm(),

@@ -35,6 +35,10 @@ Cluster rebuild(ClusterSpec spec, const std::string& what, const std::string& su
 void check_one_fan(const std::vector<std::pair<int, int>>& link, int surface,
                    const std::string& what);
 
+/// Per vertex, what the upkeep may do with it: 0 inside one film, 1 on a triple line, 2 a
+/// quadruple point, -1 held (a wall, a wire, a fixed or curve vertex, or another junction).
+std::vector<int> vertex_ranks(const Cluster& c);
+
 /// True if the facet with corners y still faces the way of its old area vector and has not
 /// (nearly) lost its area: surgery that moves corners must not turn or flatten a facet.
 bool keeps_its_side(const Vec3& old_area, const std::array<Vec3, 3>& y);

@@ -126,10 +126,10 @@ EdgeCollapseResult collapse_short_edges(const Cluster& c, double min_length);
 /// Which edges collapse_edges tries, in one pass, under the rules of collapse_short_edges.
 struct EdgeCollapseCriteria {
     double min_length = 0; ///< edges shorter than this (Evolver's `t`)
-    /// With needle_angle > 0, the short side of every needle: a facet with a corner below
-    /// needle_angle degrees whose shortest side is below half its middle one (a flat cap has
-    /// no short side and is left to the flips), such as a film's corner squeezed against a
-    /// quadruple point.
+    /// With needle_angle > 0, the shortest side of every facet with a corner below
+    /// needle_angle degrees: a needle's short side (a film's corner squeezed against a
+    /// quadruple point), or a flat cap's side from its flat corner to the nearer end of its
+    /// long side (which the flips would mend, but not where that side is a triple line).
     double needle_angle = 0;
     /// Film vertices with three neighbours collapse onto the neighbour of highest rank (their
     /// three facets become the triangle of the neighbours). Such a vertex beside a triple line,
@@ -138,6 +138,20 @@ struct EdgeCollapseCriteria {
     bool valence_three = false;
 };
 EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& criteria);
+
+struct VertexRelaxResult {
+    std::optional<Cluster> cluster; ///< none when no vertex moved
+    int moved = 0;
+};
+
+/// Mesh upkeep for flat caps: the film vertex at the largest corner of each facet with a
+/// corner below `angle` degrees and one above 90 moves in its tangent plane (the plane normal
+/// to the sum of its facets' area vectors) to the mean of its neighbours, unless a facet at it
+/// would turn over or flatten; in one pass, no two moved vertices neighbours. Inside a film a
+/// flip mends a cap too; where the cap's long side is a triple line nothing else does.
+/// Topology, materials, time and the reference and target volumes are kept; the volumes
+/// change by about the caps' areas times the moves.
+VertexRelaxResult relax_flat_corners(const Cluster& c, double angle);
 
 struct EdgeSplitResult {
     std::optional<Cluster> cluster; ///< none when nothing was split

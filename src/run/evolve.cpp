@@ -252,7 +252,9 @@ class Run {
                 (collapse_edges() || transition_junction(true, true) ||
                  transition_junction(false, true) || remove_valence_three()))
                 continue;
-            if (e->kind == "collapsing facet" && (flip_edges() || collapse_needles())) continue;
+            if (e->kind == "collapsing facet" &&
+                (flip_edges() || relax_caps() || collapse_needles()))
+                continue;
             break;
         }
         if (e && !junctions_.refused().empty()) e->message += "; " + junctions_.refused();
@@ -330,6 +332,18 @@ class Run {
         if (!collapsed.cluster) return false;
         r_.collapsed_edges += collapsed.collapsed;
         replace_cluster(std::move(*collapsed.cluster), false);
+        return true;
+    }
+
+    /// Mesh upkeep for a collapsing facet that the flips left after a transition: flat caps
+    /// (corners below ten times the watch's angle) open by moving their flat corner's film
+    /// vertex in its tangent plane.
+    bool relax_caps() {
+        if (r_.events.empty()) return false;
+        VertexRelaxResult relaxed = relax_flat_corners(c_, 10 * o_.watch.min_facet_angle);
+        if (!relaxed.cluster) return false;
+        r_.relaxed_vertices += relaxed.moved;
+        replace_cluster(std::move(*relaxed.cluster), false);
         return true;
     }
 

@@ -89,10 +89,11 @@ struct EvolveResult {
     std::string stop_reason;
     std::optional<TopologyEvent> event; ///< set when the watch or a failing step stopped the run
     std::vector<TransitionEvent> events; ///< the transitions made, in order
-    /// Mesh upkeep with transitions: short edges collapsed (at a "collapsing edge"); after a
-    /// transition long ones split (longer than the longest edge at the start) and edges
-    /// flipped (after the splits and at a "collapsing facet")
-    int collapsed_edges = 0, split_edges = 0, flipped_edges = 0;
+    /// Mesh upkeep with transitions: short edges collapsed (at a "collapsing edge"; at a
+    /// "collapsing facet" the thin facets' short sides); after a transition long ones split
+    /// (longer than the longest edge at the start), edges flipped (after the splits and at a
+    /// "collapsing facet") and flat caps' corners moved (at a "collapsing facet")
+    int collapsed_edges = 0, split_edges = 0, flipped_edges = 0, relaxed_vertices = 0;
 };
 
 /// A step that fails geometrically (GeometryError, SolverError: a collapsing facet, a singular

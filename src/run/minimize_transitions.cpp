@@ -46,21 +46,27 @@ std::optional<std::string> sliver_left(const Cluster& c) {
     return e->message.substr(0, e->message.rfind(" at t = "));
 }
 
-/// Short edges collapse, film vertices of three neighbours go, and the films flip to
-/// Delaunay; the number of collapses.
+/// Short edges collapse, film vertices of three neighbours go, the films flip to Delaunay, the
+/// flat caps the flips left open and the thin facets' short sides collapse (evolve's upkeep);
+/// the number of collapses.
 int tidy_mesh(Cluster& c, TransitionMinimizeResult& out) {
-    EdgeCollapseResult collapsed = collapse_short_edges(c, 0.05 * mean_edge_length(c));
+    EdgeCollapseCriteria short_or_lone;
+    short_or_lone.min_length = 0.05 * mean_edge_length(c);
+    short_or_lone.valence_three = true;
+    EdgeCollapseResult collapsed = collapse_edges(c, short_or_lone);
     if (collapsed.cluster) c = std::move(*collapsed.cluster);
-    out.collapsed_edges += collapsed.collapsed;
-    EdgeCollapseCriteria valence_three;
-    valence_three.valence_three = true;
-    EdgeCollapseResult lone = collapse_edges(c, valence_three);
-    if (lone.cluster) c = std::move(*lone.cluster);
-    out.collapsed_edges += lone.collapsed;
     EquiangulateResult flipped = equiangulate(c);
     if (flipped.cluster) c = std::move(*flipped.cluster);
     out.flipped_edges += flipped.flips;
-    return collapsed.collapsed + lone.collapsed;
+    VertexRelaxResult relaxed = relax_flat_corners(c, 5);
+    if (relaxed.cluster) c = std::move(*relaxed.cluster);
+    out.relaxed_vertices += relaxed.moved;
+    EdgeCollapseCriteria needles;
+    needles.needle_angle = 5; // five times minimize's collapse angle, ten times the watch's
+    EdgeCollapseResult thin = collapse_edges(c, needles);
+    if (thin.cluster) c = std::move(*thin.cluster);
+    out.collapsed_edges += collapsed.collapsed + thin.collapsed;
+    return collapsed.collapsed + thin.collapsed;
 }
 
 } // namespace

@@ -24,7 +24,7 @@ struct TransitionMinimizeResult {
     MinimizeResult result;
     int rounds = 0;
     std::vector<TransitionEvent> events; ///< step: the round after which it was made
-    int collapsed_edges = 0, flipped_edges = 0;
+    int collapsed_edges = 0, flipped_edges = 0, relaxed_vertices = 0;
 };
 
 /// Minimises c as minimize() does; after each round that stops on a collapsing facet, the

@@ -397,6 +397,28 @@ T.assert_near(o:volumes()[1], plain:volumes()[1], 0.02 * plain:volumes()[1],
 T.check_error("collapse_edges: unknown option 'x'", u.collapse_edges, u, {shorter_than = 1, x = 1})
 
 
+-- 5b'. c:relax_flat_corners: facet {1, 3, 5} of the octahedron split at a point 1e-3 from its
+-- edge 1-3's midpoint, so that the facet (1, 3, 7) is a flat cap; its flat corner moves to the
+-- mean of its neighbours in the facets' plane (area and volume stay).
+do
+  local P, F = octahedron()
+  P[7] = {0.5 - 1e-3, 0.5 - 1e-3, 2e-3}
+  local faces = {{1, 3, 7}, {3, 5, 7}, {5, 1, 7}}
+  for i = 2, #F do faces[#faces + 1] = F[i] end
+  local cap = froth.cluster{vertices = P, surfaces = {faces}, bodies = {{1}}}
+  local V, A = cap:volumes()[1], cap:area()
+  T.assert_true(cap:report().mesh.max_angle > 179, "a flat cap", tostring(cap:report().mesh.max_angle))
+  local rr = cap:relax_flat_corners{angle = 5}
+  T.assert_equal(rr.moved, 1, "its corner moves")
+  T.assert_true(cap:report().mesh.min_angle > 20, "the cap is open", tostring(cap:report().mesh.min_angle))
+  T.assert_near(cap:volumes()[1], V, 1e-14, "in the facets' plane: the volume stays")
+  T.assert_near(cap:area(), A, 1e-14, "and the area")
+  T.assert_near(rr.volume_change, 0, 1e-14, "volume_change says so")
+  T.assert_equal(cap:relax_flat_corners().moved, 0, "nothing flat is left")
+  T.check_error("relax_flat_corners: angle must be in (0, 60) degrees", cap.relax_flat_corners, cap,
+                {angle = 0})
+end
+
 -- 5c. A film's corner squeezed at a quadruple point: four cells around a tetrahedron's centre q
 -- (six inner films, each with its two lines from q bent at their midpoints), and line 2's first
 -- vertex turned towards line 1's, so that the edge across film 1|2 between them is shorter
