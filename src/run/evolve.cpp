@@ -347,8 +347,9 @@ class Run {
         return true;
     }
 
-    /// Mesh upkeep for a collapsing facet that the flips left after a transition: the short
-    /// sides of needles (corners below ten times the watch's angle) collapse.
+    /// Mesh upkeep for a collapsing facet that the flips and the caps' moves left after a
+    /// transition: the shortest side of every facet with a corner below ten times the watch's
+    /// angle collapses (a needle's short side, or a cap's by a triple line).
     bool collapse_needles() {
         if (r_.events.empty()) return false;
         EdgeCollapseCriteria needles;

@@ -56,7 +56,7 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
 
 namespace {
 
-/// The triangular film that has triple line `line` on its border, or -1. A T1 there would
+/// The triangular film that has triple line `line` on its border, or null. A T1 there would
 /// leave a two-sided film whose collapse then takes the film: the triangle's inverse T1 in
 /// two steps (the same cells meet in the end), which on a film of one facet (a T1's) the T1
 /// cannot even make.
@@ -79,11 +79,11 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
                                                     : collapsible_films(c);
     for (const Junction& j : due(c, films, limit, force, original_body)) {
         TransitionRecord record;
+        const Junction* triangle = films ? nullptr : triangle_beside(c, j.id, small_films);
+        const Junction& acted = triangle ? *triangle : j; // the junction that changes
+        const bool film = films || triangle;
         try {
             // the product is at least twice the limit in size where the mesh lets it be
-            const Junction* triangle = films ? nullptr : triangle_beside(c, j.id, small_films);
-            const Junction& acted = triangle ? *triangle : j; // the junction that changes
-            const bool film = films || triangle;
             const int id = acted.id;
             Cluster changed = !film                ? t1_line_to_film(c, id, &record, 2 * limit)
                               : acted.sides() == 3 ? t1_film_to_line(c, id, &record, 2 * limit)
@@ -98,9 +98,12 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
             return changed;
         } catch (const TopologyError& x) {
             std::string why = x.what();
-            for (const std::string op : {"t1: ", "t1_inverse: "})
+            for (const std::string op : {"t1: ", "t1_inverse: ", "collapse_two_sided_film: "})
                 if (why.rfind(op, 0) == 0) why.erase(0, op.size());
-            refused_ = std::string(films ? "no inverse T1" : "no T1") + " could be made: " + why;
+            const char* what = !film                ? "no T1"
+                               : acted.sides() == 3 ? "no inverse T1"
+                                                    : "no collapse of a two-sided film";
+            refused_ = std::string(what) + " could be made: " + why;
         }
     }
     return std::nullopt;
