@@ -143,6 +143,16 @@ double volume_change(const Cluster& before, const Cluster& after) {
     return change;
 }
 
+/// An upkeep's cluster (none: nothing changed) replaces h's, the stepper starting afresh; the
+/// largest relative change of a body volume it made.
+double take_change(ClusterHandle& h, std::optional<Cluster>& changed) {
+    if (!changed) return 0;
+    const double change = volume_change(h.cluster, *changed);
+    h.cluster = std::move(*changed);
+    h.stepper.reset();
+    return change;
+}
+
 /// c:refine() -> {vertices, facets, volume_change}
 int l_refine(lua_State* L) {
     ClusterHandle& h = self(L);
@@ -319,12 +329,7 @@ int l_relax_flat_corners(lua_State* L) {
     ChangeGuard changing(L, h, "relax_flat_corners");
     return guarded(L, [&] {
         VertexRelaxResult r = relax_flat_corners(h.cluster, angle);
-        double change = 0;
-        if (r.cluster) {
-            change = volume_change(h.cluster, *r.cluster);
-            h.cluster = std::move(*r.cluster);
-            h.stepper.reset();
-        }
+        const double change = take_change(h, r.cluster);
         lua_createtable(L, 0, 2);
         set_integer(L, "moved", r.moved);
         set_number(L, "volume_change", change);
@@ -352,12 +357,7 @@ int l_equiangulate(lua_State* L) {
     ChangeGuard changing(L, h, "equiangulate");
     return guarded(L, [&] {
         EquiangulateResult r = equiangulate(h.cluster, static_cast<int>(max_sweeps));
-        double change = 0;
-        if (r.cluster) {
-            change = volume_change(h.cluster, *r.cluster);
-            h.cluster = std::move(*r.cluster);
-            h.stepper.reset();
-        }
+        const double change = take_change(h, r.cluster);
         lua_createtable(L, 0, 3);
         set_integer(L, "flips", r.flips);
         set_integer(L, "sweeps", r.sweeps);

@@ -291,10 +291,7 @@ class Run {
     bool collapse_edges() {
         const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
         EdgeCollapseResult collapsed = collapse_short_edges(c_, limit);
-        if (!collapsed.cluster) return false;
-        r_.collapsed_edges += collapsed.collapsed;
-        replace_cluster(std::move(*collapsed.cluster), false);
-        return true;
+        return take_upkeep(collapsed.cluster, collapsed.collapsed, r_.collapsed_edges);
     }
 
     /// Mesh upkeep for the films a transition makes grow: once the run has made one, edges
@@ -329,10 +326,7 @@ class Run {
         EdgeCollapseCriteria lone;
         lone.valence_three = true;
         EdgeCollapseResult collapsed = froth::collapse_edges(c_, lone);
-        if (!collapsed.cluster) return false;
-        r_.collapsed_edges += collapsed.collapsed;
-        replace_cluster(std::move(*collapsed.cluster), false);
-        return true;
+        return take_upkeep(collapsed.cluster, collapsed.collapsed, r_.collapsed_edges);
     }
 
     /// Mesh upkeep for a collapsing facet that the flips left after a transition: flat caps
@@ -341,10 +335,7 @@ class Run {
     bool relax_caps() {
         if (r_.events.empty()) return false;
         VertexRelaxResult relaxed = relax_flat_corners(c_, 10 * o_.watch.min_facet_angle);
-        if (!relaxed.cluster) return false;
-        r_.relaxed_vertices += relaxed.moved;
-        replace_cluster(std::move(*relaxed.cluster), false);
-        return true;
+        return take_upkeep(relaxed.cluster, relaxed.moved, r_.relaxed_vertices);
     }
 
     /// Mesh upkeep for a collapsing facet that the flips and the caps' moves left after a
@@ -355,9 +346,15 @@ class Run {
         EdgeCollapseCriteria needles;
         needles.needle_angle = 10 * o_.watch.min_facet_angle;
         EdgeCollapseResult collapsed = froth::collapse_edges(c_, needles);
-        if (!collapsed.cluster) return false;
-        r_.collapsed_edges += collapsed.collapsed;
-        replace_cluster(std::move(*collapsed.cluster), false);
+        return take_upkeep(collapsed.cluster, collapsed.collapsed, r_.collapsed_edges);
+    }
+
+    /// An upkeep's result: the cluster it made (none: nothing done, false) replaces the run's,
+    /// and its count goes to `counter`.
+    bool take_upkeep(std::optional<Cluster>& changed, int count, int& counter) {
+        if (!changed) return false;
+        counter += count;
+        replace_cluster(std::move(*changed), false);
         return true;
     }
 
