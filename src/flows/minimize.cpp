@@ -155,16 +155,18 @@ class StepSystem {
 };
 
 /// The step of minimize.h from the first variation d: K y = -T^T grad E + B p, B^T y = dV with
-/// B = T^T G, by the Schur complement (solvers/schur_complement.h); K is factorised (fresh)
-/// in the first solve only.
-Eigen::VectorXd constrained_step(StepSystem& K, bool fresh, const Variation& d,
-                                 const Eigen::VectorXd& dV, Eigen::VectorXd& p) {
+/// B = T^T G, by the Schur complement (solvers/schur_complement.h; with many bodies by
+/// iterations preconditioned with the Schur complement of an earlier step); K is factorised
+/// (fresh) in the first solve only.
+Eigen::VectorXd constrained_step(StepSystem& K, bool fresh, LaggedSchurComplement& schur,
+                                 const Variation& d, const Eigen::VectorXd& dV,
+                                 Eigen::VectorXd& p) {
     const auto solve = [&](const Eigen::MatrixXd& R) {
         const Eigen::MatrixXd U = K.solve(R, fresh);
         fresh = false;
         return U;
     };
-    return schur_complement_solve(solve, d.grad_volume, -d.grad_energy_full, dV, p);
+    return schur.solve(solve, d.grad_volume, -d.grad_energy_full, dV, p);
 }
 
 Eigen::VectorXd flatten(const std::vector<Vec3>& X) {
@@ -179,7 +181,8 @@ std::vector<Vec3> unflatten(const Eigen::VectorXd& x) {
 
 class Minimizer {
   public:
-    Minimizer(Cluster& c, const MinimizeOptions& o) : c_(c), o_(o), system_(c) {
+    Minimizer(Cluster& c, const MinimizeOptions& o, LaggedSchurComplement* schur)
+        : c_(c), o_(o), system_(c), schur_(schur ? *schur : own_schur_) {
         double area = 0;
         for (double a : surface_areas(c)) area += a;
         R2_ = area / (4 * M_PI);
@@ -284,7 +287,7 @@ class Minimizer {
         Eigen::VectorXd dV(c_.n_volume_constraints());
         for (int b = 0; b < c_.n_volume_constraints(); ++b) dV[b] = c_.target_volumes()[b] - V[b];
         Eigen::VectorXd p;
-        const Eigen::VectorXd y = constrained_step(system_, fresh, d, dV, p);
+        const Eigen::VectorXd y = constrained_step(system_, fresh, schur_, d, dV, p);
         std::vector<Vec3> X = c_.positions();
         for (int v = 0; v < c_.n_vertices(); ++v) X[v] += P.displacement(y, v);
         if (!all_walls_flat_) project_onto_walls_of(c_, X);
@@ -395,6 +398,8 @@ class Minimizer {
     double R2_ = 1, tau_ = 1;
     bool all_walls_flat_ = true;
     StepSystem system_;
+    LaggedSchurComplement own_schur_; // S of an earlier step, the preconditioner for many bodies
+    LaggedSchurComplement& schur_;    // own_schur_ or the caller's
     Anderson anderson_{8};
 };
 
@@ -407,14 +412,15 @@ EquilibriumState equilibrium_state(const Cluster& c) {
     return balance(first_variation(c, P, pair_geometry(c)));
 }
 
-MinimizeResult minimize(Cluster& c, const MinimizeOptions& options) {
+MinimizeResult minimize(Cluster& c, const MinimizeOptions& options,
+                        LaggedSchurComplement* schur) {
     check(options);
     check_filled_box_targets(c, "minimize");
     if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
         throw GeometryError("minimize: " + facet_name(s, f) + " has zero area");
     const std::vector<Vec3> X0 = c.positions();
     try {
-        return Minimizer(c, options).run();
+        return Minimizer(c, options, schur).run();
     } catch (const std::exception&) {
         c.set_positions(X0);
         throw;

@@ -19,6 +19,7 @@
 /// BGN tangential structure of the step keeps the mesh as good as the flows do.
 
 #include "mesh/cluster.h"
+#include "solvers/schur_complement.h"
 
 #include <string>
 #include <vector>
@@ -69,6 +70,10 @@ struct MinimizeResult {
 /// on Ctrl-C (core/interrupt.h) between steps with the last accepted state.
 /// \throw InvalidInput for bad options (the cluster unchanged); on any other throw (a wall
 /// function's error, a singular system) the cluster is restored to where it started.
-MinimizeResult minimize(Cluster& c, const MinimizeOptions& options);
+/// `schur`: the Schur complement of an earlier minimize of the same bodies, kept for the next
+/// one (minimize_with_transitions' rounds), where it preconditions the constraint solve of a
+/// cluster of many bodies (solvers/schur_complement.h); none: a new one for this call.
+MinimizeResult minimize(Cluster& c, const MinimizeOptions& options,
+                        LaggedSchurComplement* schur = nullptr);
 
 } // namespace froth

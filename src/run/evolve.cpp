@@ -308,10 +308,17 @@ class Run {
         return true;
     }
 
-    /// Mesh upkeep for a collapsing facet after a transition: Delaunay flips (Evolver's `u`)
-    /// inside the films, which turn a flat sliver into two good facets.
+    /// True if the collapsing-facet upkeep may change the mesh: after a transition of this run,
+    /// or in a cluster with quadruple points (a foam or grain network, which a driver may step
+    /// one evolve call at a time). A pinch-off scene keeps its mesh, so that its watch stops.
+    bool facet_upkeep_allowed() const {
+        return !r_.events.empty() || !c_.quadruple_points().empty();
+    }
+
+    /// Mesh upkeep for a collapsing facet (facet_upkeep_allowed): Delaunay flips (Evolver's
+    /// `u`) inside the films, which turn a flat sliver into two good facets.
     bool flip_edges() {
-        if (r_.events.empty()) return false;
+        if (!facet_upkeep_allowed()) return false;
         EquiangulateResult flipped = equiangulate(c_);
         if (!flipped.cluster) return false;
         r_.flipped_edges += flipped.flips;
@@ -329,20 +336,20 @@ class Run {
         return take_upkeep(collapsed.cluster, collapsed.collapsed, r_.collapsed_edges);
     }
 
-    /// Mesh upkeep for a collapsing facet that the flips left after a transition: flat caps
+    /// Mesh upkeep for a collapsing facet that the flips left (facet_upkeep_allowed): flat caps
     /// (corners below ten times the watch's angle) open by moving their flat corner's film
     /// vertex in its tangent plane.
     bool relax_caps() {
-        if (r_.events.empty()) return false;
+        if (!facet_upkeep_allowed()) return false;
         VertexRelaxResult relaxed = relax_flat_corners(c_, 10 * o_.watch.min_facet_angle);
         return take_upkeep(relaxed.cluster, relaxed.moved, r_.relaxed_vertices);
     }
 
-    /// Mesh upkeep for a collapsing facet that the flips and the caps' moves left after a
-    /// transition: the shortest side of every facet with a corner below ten times the watch's
+    /// Mesh upkeep for a collapsing facet that the flips and the caps' moves left
+    /// (facet_upkeep_allowed): the shortest side of every facet with a corner below ten times the watch's
     /// angle collapses (a needle's short side, or a cap's by a triple line).
     bool collapse_needles() {
-        if (r_.events.empty()) return false;
+        if (!facet_upkeep_allowed()) return false;
         EdgeCollapseCriteria needles;
         needles.needle_angle = 10 * o_.watch.min_facet_angle;
         EdgeCollapseResult collapsed = froth::collapse_edges(c_, needles);

@@ -6,6 +6,13 @@
 /// columns at a time and only S is kept: memory O(n block + m^2), not O(n m), which is what a
 /// foam of 1000 cells on 10^5 vertices needs (minimize.h). `solve(R)` returns K^-1 R for a
 /// dense R; its first call is the one with f (a caller that factorises on demand does so there).
+///
+/// LaggedSchurComplement is the same solve for a sequence of nearby systems (the iterations of
+/// minimize): S costs m solves with K, which for a foam of 1000 cells is most of a step, while
+/// S changes little from one iterate to the next. It keeps the factor of the last S it made and
+/// solves S p = g - B^T u by conjugate gradients preconditioned with it (S is SPD when K is and
+/// B has full column rank), one solve with K per iteration; only when that does not converge
+/// within kMaxIterations does it make S afresh.
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -14,23 +21,94 @@
 
 namespace froth {
 
+/// S = B^T K^-1 B, `block` columns of K^-1 B at a time.
 template <class Solve>
-Eigen::VectorXd schur_complement_solve(Solve&& solve, const Eigen::SparseMatrix<double>& B,
-                                       const Eigen::VectorXd& f, const Eigen::VectorXd& g,
-                                       Eigen::VectorXd& p, Eigen::Index block = 64) {
-    const Eigen::VectorXd u = solve(Eigen::MatrixXd(f));
+Eigen::MatrixXd schur_complement_matrix(Solve&& solve, const Eigen::SparseMatrix<double>& B,
+                                        Eigen::Index block = 64) {
     const Eigen::Index m = B.cols();
-    if (m == 0) {
-        p.resize(0);
-        return u;
-    }
     Eigen::MatrixXd S(m, m);
     for (Eigen::Index j = 0; j < m; j += block) {
         const Eigen::Index k = std::min(block, m - j);
         S.middleCols(j, k) = B.transpose() * solve(Eigen::MatrixXd(B.middleCols(j, k)));
     }
-    p = S.partialPivLu().solve(g - B.transpose() * u);
+    return S;
+}
+
+template <class Solve>
+Eigen::VectorXd schur_complement_solve(Solve&& solve, const Eigen::SparseMatrix<double>& B,
+                                       const Eigen::VectorXd& f, const Eigen::VectorXd& g,
+                                       Eigen::VectorXd& p, Eigen::Index block = 64) {
+    const Eigen::VectorXd u = solve(Eigen::MatrixXd(f));
+    if (B.cols() == 0) {
+        p.resize(0);
+        return u;
+    }
+    p = schur_complement_matrix(solve, B, block).partialPivLu().solve(g - B.transpose() * u);
     return u + solve(Eigen::MatrixXd(B * p)).col(0);
 }
+
+class LaggedSchurComplement {
+  public:
+    /// Below this many constraints S is made afresh every time: its columns are one or two
+    /// blocks of a multiple right-hand-side solve, as cheap as a few iterations.
+    static constexpr Eigen::Index kMinColumns = 128;
+    /// Iterations of the preconditioned CG before S is made afresh.
+    static constexpr int kMaxIterations = 25;
+    /// The CG stops at this residual relative to g - B^T u: the direct solve's accuracy.
+    static constexpr double kTolerance = 1e-13;
+
+    /// As schur_complement_solve.
+    template <class Solve>
+    Eigen::VectorXd solve(Solve&& solve, const Eigen::SparseMatrix<double>& B,
+                          const Eigen::VectorXd& f, const Eigen::VectorXd& g, Eigen::VectorXd& p) {
+        const Eigen::VectorXd u = solve(Eigen::MatrixXd(f));
+        const Eigen::Index m = B.cols();
+        if (m == 0) {
+            p.resize(0);
+            return u;
+        }
+        const Eigen::VectorXd r0 = g - B.transpose() * u;
+        if (!(m >= kMinColumns && lagged_.rows() == m && conjugate_gradients(solve, B, r0, p))) {
+            ++fresh_;
+            lagged_ = schur_complement_matrix(solve, B).partialPivLu();
+            p = lagged_.solve(r0);
+        }
+        return u + solve(Eigen::MatrixXd(B * p)).col(0);
+    }
+
+    void reset() { lagged_ = Eigen::PartialPivLU<Eigen::MatrixXd>(); }
+    int fresh_matrices() const { return fresh_; }  ///< times S was made
+    int iterations() const { return iterations_; } ///< CG iterations in all
+
+  private:
+    /// S p = r0 by CG preconditioned with the lagged S; false if it did not converge.
+    template <class Solve>
+    bool conjugate_gradients(Solve& solve, const Eigen::SparseMatrix<double>& B,
+                             const Eigen::VectorXd& r0, Eigen::VectorXd& p) {
+        p = Eigen::VectorXd::Zero(r0.size());
+        const double stop = kTolerance * r0.norm();
+        if (stop == 0) return true;
+        Eigen::VectorXd r = r0, z = lagged_.solve(r), d = z;
+        double rz = r.dot(z);
+        for (int it = 0; it < kMaxIterations; ++it) {
+            ++iterations_;
+            const Eigen::VectorXd w = B.transpose() * solve(Eigen::MatrixXd(B * d)).col(0);
+            const double dw = d.dot(w);
+            if (!(dw > 0)) return false; // S not positive definite in this direction
+            const double alpha = rz / dw;
+            p += alpha * d;
+            r -= alpha * w;
+            if (r.norm() <= stop) return true;
+            z = lagged_.solve(r);
+            const double rz_next = r.dot(z);
+            d = z + (rz_next / rz) * d;
+            rz = rz_next;
+        }
+        return false;
+    }
+
+    Eigen::PartialPivLU<Eigen::MatrixXd> lagged_;
+    int fresh_ = 0, iterations_ = 0;
+};
 
 } // namespace froth

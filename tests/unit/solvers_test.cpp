@@ -9,6 +9,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <utility>
+
 namespace froth {
 namespace {
 
@@ -224,6 +226,44 @@ TEST(Solvers, SchurComplementInBlocksMatchesTheDenseSaddlePoint) {
         Eigen::SparseMatrix<double>(n, 0), f, g.head(0), p);
     EXPECT_EQ(p.size(), 0);
     EXPECT_LT((y - Eigen::MatrixXd(K).llt().solve(f)).norm(), 1e-12 * y.norm());
+}
+
+// The lagged Schur complement (schur_complement.h) gives the direct solve's y and p on a
+// sequence of nearby systems (the constraint columns moving a little, as a minimize iterate's
+// volume gradients do) while it makes S only once; with few constraints it makes S every time.
+TEST(Solvers, LaggedSchurComplementMatchesTheDirectSolveAndMakesSOnce) {
+    const int n = 1200;
+    const SparseMatrix K = shifted_laplacian(n, 0.05, 0.02);
+    const auto columns = [&](int m, double shift) {
+        std::vector<Eigen::Triplet<double>> t; // overlapping columns, like neighbouring cells
+        for (int j = 0; j < m; ++j)
+            for (int i = 9 * j; i < 9 * j + 12 && i < n; ++i)
+                t.emplace_back(i, j, std::cos(i + 3.0 * j + shift) + 0.1 * shift);
+        Eigen::SparseMatrix<double> B(n, m);
+        B.setFromTriplets(t.begin(), t.end());
+        return B;
+    };
+    const Eigen::VectorXd f = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+    for (int m : {130, 20}) {
+        LaggedSchurComplement lagged;
+        for (int step = 0; step < 4; ++step) {
+            const Eigen::SparseMatrix<double> B = columns(m, 0.01 * step);
+            const Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(m, 0.5 + step, -0.5);
+            SparseDirectSolver solver(Factorization::Cholesky);
+            auto solve = [&, first = true](const Eigen::MatrixXd& R) mutable {
+                const bool fresh = std::exchange(first, false);
+                return fresh ? solver.solve_fresh(K, R) : solver.solve_with_last_factor(R);
+            };
+            Eigen::VectorXd p, p_direct;
+            const Eigen::VectorXd y = lagged.solve(solve, B, f, g, p);
+            const Eigen::VectorXd y_direct = schur_complement_solve(solve, B, f, g, p_direct);
+            EXPECT_LT((y - y_direct).norm(), 1e-10 * y_direct.norm()) << m << " step " << step;
+            EXPECT_LT((p - p_direct).norm(), 1e-10 * p_direct.norm()) << m << " step " << step;
+            EXPECT_LT((B.transpose() * y - g).norm(), 1e-10 * g.norm()) << m << " step " << step;
+        }
+        EXPECT_EQ(lagged.fresh_matrices(), m >= LaggedSchurComplement::kMinColumns ? 1 : 4) << m;
+        EXPECT_EQ(lagged.iterations() > 0, m >= LaggedSchurComplement::kMinColumns) << m;
+    }
 }
 
 } // namespace
