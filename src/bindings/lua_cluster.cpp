@@ -436,7 +436,7 @@ int l_evolve(lua_State* L) {
             return go_on;
         };
     return guarded(L, [&] {
-        const EvolveResult r = evolve(h.cluster, h.stepper, e);
+        const EvolveResult r = evolve(h.cluster, h.stepper, e, &h.transitions);
         // Ctrl-C is acknowledged where the user pressed it (Evolver does the same); scripts
         // read stop_reason = "interrupted".
         if (r.stop_reason == "interrupted")

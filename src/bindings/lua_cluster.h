@@ -3,7 +3,7 @@
 /// cluster's sparsity patterns and symbolic factorisations).
 
 #include "flows/stepper.h"
-#include "run/junction_transitions.h"
+#include "run/evolve.h"
 
 #include <vector>
 
@@ -14,6 +14,8 @@ namespace froth::lua {
 struct ClusterHandle {
     Cluster cluster;
     TimeStepper stepper;
+    /// What c:evolve{transitions = true} leaves for its next call (run/evolve.h).
+    TransitionMemory transitions;
     /// Re-entrancy (docs/lua_api.md, "Callbacks"): the call now changing the cluster
     /// (c:step, c:evolve, c:minimize, c:set_sigma, ...) and the number of queries running a
     /// Lua callback (a wall function in c:volumes). Callbacks may read the cluster, never
@@ -21,9 +23,10 @@ struct ClusterHandle {
     const char* changing = nullptr;
     int querying = 0;
     explicit ClusterHandle(Cluster c) : cluster(std::move(c)) {}
-    /// c:clone(): the cluster and the stepper's whole state, so the copy steps exactly as the
-    /// original would; not the re-entrancy marks.
-    ClusterHandle(const ClusterHandle& o) : cluster(o.cluster), stepper(o.stepper) {}
+    /// c:clone(): the cluster, the stepper's whole state and the transitions' memory, so the
+    /// copy steps exactly as the original would; not the re-entrancy marks.
+    ClusterHandle(const ClusterHandle& o)
+        : cluster(o.cluster), stepper(o.stepper), transitions(o.transitions) {}
 };
 
 inline constexpr const char* kClusterType = "froth.Cluster";

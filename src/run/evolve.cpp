@@ -74,9 +74,10 @@ WatchOptions watch_options(const EvolveOptions& o) {
 /// One evolution: the loop of evolve() split into its parts.
 class Run {
   public:
-    Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o)
+    Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o, TransitionMemory* memory)
         : c_(c), stepper_(stepper), o_(o), watch_(watch_options(o)), t_start_(c.time()),
-          t_end_(c.time() + o.duration), uncrossed_(c.positions()), uncrossed_t_(c.time()) {
+          t_end_(c.time() + o.duration), uncrossed_(c.positions()), uncrossed_t_(c.time()),
+          memory_(o.transitions ? memory : nullptr) {
         for (int b = 0; b < c.n_bodies(); ++b) original_body_.push_back(b);
         r_.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
         if (!o.output.empty()) {
@@ -89,7 +90,15 @@ class Run {
         }
         if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper);
         write_frame(); // the start, so a bad path fails before any step
-        if (o.transitions) junctions_.remember(c_, original_body_);
+        if (!o.transitions) return;
+        if (memory_ && memory_->junctions &&
+            memory_->junctions->fits(c.n_bodies(), o.watch.min_line_fraction)) {
+            junctions_ = *memory_->junctions;
+            longest_edge_ = memory_->longest_edge;
+            made_before_ = memory_->transitions_made;
+        } else {
+            junctions_.remember(c_, original_body_);
+        }
     }
 
     /// Takes one step and everything that follows it; false ends the run.
@@ -124,6 +133,10 @@ class Run {
         }
         if (o_.progress) std::fprintf(o_.progress, "\r%90s\r", ""), std::fflush(o_.progress);
         r_.last = make_report(c_);
+        if (memory_) {
+            junctions_.carry_over(original_body_);
+            *memory_ = {junctions_, longest_edge_, transitions_made()};
+        }
         r_.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
         return std::move(r_);
     }
@@ -294,13 +307,13 @@ class Run {
         return take_upkeep(collapsed.cluster, collapsed.collapsed, r_.collapsed_edges);
     }
 
-    /// Mesh upkeep for the films a transition makes grow: once the run has made one, edges
-    /// longer than the longest edge at the start of the run are split, and the films then
-    /// flipped to Delaunay (the splits of a stretched facet leave fans of slivers). A run
-    /// without transitions keeps its mesh as it is.
+    /// Mesh upkeep for the films a transition makes grow: once the run (or a call before it,
+    /// TransitionMemory) has made one, edges longer than the longest edge at the start of the
+    /// (first) run are split, and the films then flipped to Delaunay (the splits of a stretched
+    /// facet leave fans of slivers). A run without transitions keeps its mesh as it is.
     bool split_edges() {
-        if (r_.events.empty()) return false;
-        EdgeSplitResult split = split_long_edges(c_, edges_start_.longest);
+        if (!transitions_made()) return false;
+        EdgeSplitResult split = split_long_edges(c_, longest_edge_);
         if (!split.cluster) return false;
         r_.split_edges += split.split;
         replace_cluster(std::move(*split.cluster), false);
@@ -312,8 +325,11 @@ class Run {
     /// or in a cluster with quadruple points (a foam or grain network, which a driver may step
     /// one evolve call at a time). A pinch-off scene keeps its mesh, so that its watch stops.
     bool facet_upkeep_allowed() const {
-        return !r_.events.empty() || !c_.quadruple_points().empty();
+        return transitions_made() || !c_.quadruple_points().empty();
     }
+
+    /// True once this run, or a call before it on the same memory, made a transition.
+    bool transitions_made() const { return made_before_ || !r_.events.empty(); }
 
     /// Mesh upkeep for a collapsing facet (facet_upkeep_allowed): Delaunay flips (Evolver's
     /// `u`) inside the films, which turn a flat sliver into two good facets.
@@ -443,7 +459,9 @@ class Run {
     const int n_start_bodies_ = c_.n_bodies();
     std::vector<int> original_body_; // the bodies' ids at the start of the run
     JunctionTransitions junctions_{o_.watch.min_line_fraction};
-    const EdgeLengths edges_start_ = edge_lengths(c_); // the mesh size the upkeep keeps
+    TransitionMemory* memory_; // the calls' memory, with transitions
+    double longest_edge_ = edge_lengths(c_).longest; // the mesh size the upkeep keeps
+    bool made_before_ = false; // a call before this one made a transition
     static constexpr int kMaxTransitionsPerStep = 64;
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
@@ -457,13 +475,14 @@ void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper)
     stepper.drop_factorizations();
 }
 
-EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o) {
+EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o,
+                    TransitionMemory* memory) {
     check_options(o);
     stepper.set_fixed_point(o.fixed_point); // throws InvalidInput for bad values
     stepper.set_order(o.adaptive ? 2 : o.order); // the estimate is that of the order-2 step
     const EngineLoopScope polling; // Ctrl-C is served between steps, also inside on_step
     const auto start = Clock::now();
-    Run run(c, stepper, o);
+    Run run(c, stepper, o, memory);
     while (run.advance()) {
     }
     return run.finish(start);

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -96,11 +97,25 @@ struct EvolveResult {
     int collapsed_edges = 0, split_edges = 0, flipped_edges = 0, relaxed_vertices = 0;
 };
 
+/// What an evolve with transitions leaves for the next call on the same cluster, so that calls
+/// one after the other (a driver that measures between steps) behave as one long call: the
+/// junctions' sizes at the last look and the products of transitions, the mesh size the
+/// upkeep keeps (the longest edge at the start of the first call) and whether any call made a
+/// transition (which turns the splits of long edges on).
+struct TransitionMemory {
+    std::optional<JunctionTransitions> junctions; ///< none: no call with transitions yet
+    double longest_edge = 0;
+    bool transitions_made = false;
+};
+
 /// A step that fails geometrically (GeometryError, SolverError: a collapsing facet, a singular
 /// system) or a watch event ends the run with stop_reason "topology: ..." and the last valid
 /// state in place. \throw InvalidInput for bad options; other errors propagate, and the
 /// cluster then holds the state after the last successful step.
-EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& options);
+/// `memory` (with EvolveOptions::transitions): the TransitionMemory of the last call on c, used
+/// if it fits c (the same bodies and min_line_fraction), and updated for the next.
+EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& options,
+                    TransitionMemory* memory = nullptr);
 
 /// Saves c and the stepper's history to a state file (c:save, evolve's checkpoints). The
 /// stepper then forgets its factorisations, so that this run and one restored from the file

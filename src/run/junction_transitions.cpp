@@ -6,9 +6,14 @@
 #include "mesh/transitions.h"
 
 #include <algorithm>
+#include <type_traits>
 
 namespace froth {
 namespace {
+
+/// A product of a transition is due again once it is below this fraction of its size at the
+/// first look after it (junction_transitions.h).
+constexpr double kProductShrink = 0.5;
 
 /// The cells of what a T1 or an inverse T1 makes of a junction: a line (A, B, C; D, E)
 /// becomes a film (D, E; A, B, C) and back.
@@ -36,6 +41,47 @@ void JunctionTransitions::remember(const Cluster& c, const std::vector<int>& ori
         memory.clear();
         for (const Junction& j : junctions(c, films, original_body)) memory[j.cells] = j.size;
     }
+    for (bool films : {false, true}) {
+        const auto& memory = films ? film_sizes_ : line_sizes_;
+        auto& products = products_[films];
+        for (auto it = products.begin(); it != products.end();) {
+            const auto now = memory.find(it->first);
+            if (now == memory.end() || (it->second >= 0 && now->second > it->second)) {
+                it = products.erase(it); // gone, or grown: a junction like any other now
+                continue;
+            }
+            if (it->second < 0) it->second = now->second;
+            ++it;
+        }
+    }
+}
+
+void JunctionTransitions::carry_over(const std::vector<int>& original_body) {
+    std::map<int, int> now{{-1, -1}};
+    for (std::size_t b = 0; b < original_body.size(); ++b) now[original_body[b]] = static_cast<int>(b);
+    // original ids grow with the ids now (pops only remove), so renumbered keys stay sorted
+    const auto renumber = [&](auto& memory) {
+        std::remove_reference_t<decltype(memory)> out;
+        for (const auto& [cells, size] : memory) {
+            std::vector<int> key = cells;
+            bool gone = false;
+            for (int& k : key) {
+                const auto it = now.find(k);
+                gone = gone || it == now.end();
+                if (!gone) k = it->second;
+            }
+            if (!gone) out.emplace(std::move(key), size);
+        }
+        memory = std::move(out);
+    };
+    renumber(line_sizes_), renumber(film_sizes_), renumber(products_[0]), renumber(products_[1]);
+    new_look();
+    bodies_ = static_cast<int>(original_body.size());
+}
+
+bool JunctionTransitions::protected_product(const Junction& j, bool film) const {
+    const auto product = products_[film].find(j.cells);
+    return product != products_[film].end() && !(j.size < kProductShrink * product->second);
 }
 
 std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, double limit,
@@ -45,7 +91,8 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
     std::vector<Junction> out;
     for (Junction& j : junctions(c, films, original_body)) {
         if (!(j.size < (films ? j.sides() : 1) * limit)) continue;
-        if (made_.count(j.cells)) continue; // a product of this look's transitions
+        if (made_[films].count(j.cells)) continue; // a product of this look's transitions
+        if (protected_product(j, films)) continue;
         const auto was = memory.find(j.cells);
         if (force || (was != memory.end() && j.size < was->second)) out.push_back(std::move(j));
     }
@@ -76,10 +123,11 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
     if (c.quadruple_points().size() < 2u) return std::nullopt;
     const double limit = fraction_ * mean_edge_length(c);
     const std::vector<Junction> small_films = films ? std::vector<Junction>{}
-                                                    : collapsible_films(c);
+                                                    : junctions(c, true, original_body);
     for (const Junction& j : due(c, films, limit, force, original_body)) {
         TransitionRecord record;
         const Junction* triangle = films ? nullptr : triangle_beside(c, j.id, small_films);
+        if (triangle && protected_product(*triangle, true)) continue; // its side relaxes with it
         const Junction& acted = triangle ? *triangle : j; // the junction that changes
         const bool film = films || triangle;
         try {
@@ -94,7 +142,10 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
             event.cells = record.cells;
             for (int& k : event.cells)
                 if (k >= 0) k = original_body[k];
-            if (!film || acted.sides() == 3) made_.insert(product_cells(acted.cells, film));
+            if (!film || acted.sides() == 3) { // the product: a film of a T1, a line of an inverse T1
+                made_[!film].insert(product_cells(acted.cells, film));
+                products_[!film][product_cells(acted.cells, film)] = -1;
+            }
             return changed;
         } catch (const TopologyError& x) {
             std::string why = x.what();

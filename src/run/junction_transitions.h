@@ -3,7 +3,11 @@
 /// transitions): which junctions are due, and the transition of one. A junction is due when it
 /// is small (a triple line between quadruple points shorter than min_line_fraction of the mean
 /// edge, a triangular film of perimeter below three times that) and has shrunk since the last
-/// look; what a transition makes is not due in the same look.
+/// look; what a transition makes is not due in the same look, and later only once it has
+/// shrunk below half its size at the first look after it: a product is made larger than the
+/// limit where the mesh lets it be, and relaxes back by shrinking a little, which is not the
+/// shrinking of a junction on its way out (without this rule T1s and inverse T1s alternated at
+/// the same junction step after step in grain networks).
 
 #include "mesh/cluster.h"
 #include "run/topology_watch.h"
@@ -42,7 +46,17 @@ class JunctionTransitions {
     /// The sizes of c's junctions, for the next look.
     void remember(const Cluster& c, const std::vector<int>& original_body);
     /// A new look (after a step): the products of the last look's transitions may be due again.
-    void new_look() { made_.clear(), refused_.clear(); }
+    void new_look() { made_[0].clear(), made_[1].clear(), refused_.clear(); }
+    /// Keeps the memory for the next run on the same cluster (evolve's calls one after the
+    /// other behave as one long call): its keys go from the run's original body ids to the ids
+    /// now (original_body: the original id of each body now), the junctions of popped bodies
+    /// are forgotten.
+    void carry_over(const std::vector<int>& original_body);
+    /// True if this memory, carried over, fits a run on a cluster of n_bodies bodies with this
+    /// min_line_fraction.
+    bool fits(int n_bodies, double min_line_fraction) const {
+        return n_bodies == bodies_ && min_line_fraction == fraction_;
+    }
 
     /// The first due junction of c (triangular films with `films`, else lines) whose
     /// transition can be made, smallest first; with `force` every small one is due, shrinking
@@ -61,7 +75,17 @@ class JunctionTransitions {
     double fraction_;
     // the sizes of the junctions at the last look, by their cells
     std::map<std::vector<int>, double> line_sizes_, film_sizes_;
-    std::set<std::vector<int>> made_; // the cells of the junctions this look's transitions made
+    /// True if j (a film with `film`) is the product of an earlier transition that has not
+    /// yet shrunk below kProductShrink of its first size.
+    bool protected_product(const Junction& j, bool film) const;
+
+    // [0] lines, [1] films (a line's cells and a film's can be the same list):
+    // the cells of the junctions this look's transitions made
+    std::array<std::set<std::vector<int>>, 2> made_;
+    // the cells of earlier transitions' products, with their sizes at the first look after
+    // (-1 until then); dropped once gone or grown past that size
+    std::array<std::map<std::vector<int>, double>, 2> products_;
+    int bodies_ = -1; // carry_over: the number of bodies the memory is for
     std::string refused_;             // why a due transition could not be made in this look
 };
 
