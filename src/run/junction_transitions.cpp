@@ -11,8 +11,8 @@
 namespace froth {
 namespace {
 
-/// A product of a transition is due again once it is below this fraction of its size at the
-/// first look after it (junction_transitions.h).
+/// A product of a transition is due again once it is below this fraction of its size right
+/// after the transition (junction_transitions.h).
 constexpr double kProductShrink = 0.5;
 
 /// The cells of what a T1 or an inverse T1 makes of a junction: a line (A, B, C; D, E)

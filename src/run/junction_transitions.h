@@ -4,7 +4,7 @@
 /// is small (a triple line between quadruple points shorter than min_line_fraction of the mean
 /// edge, a triangular film of perimeter below three times that) and has shrunk since the last
 /// look; what a transition makes is not due in the same look, and later only once it has
-/// shrunk below half its size at the first look after it: a product is made larger than the
+/// shrunk below half its size right after it: a product is made larger than the
 /// limit where the mesh lets it be, and relaxes back by shrinking a little, which is not the
 /// shrinking of a junction on its way out (without this rule T1s and inverse T1s alternated at
 /// the same junction step after step in grain networks).
@@ -82,8 +82,8 @@ class JunctionTransitions {
     // [0] lines, [1] films (a line's cells and a film's can be the same list):
     // the cells of the junctions this look's transitions made
     std::array<std::set<std::vector<int>>, 2> made_;
-    // the cells of earlier transitions' products, with their sizes at the first look after
-    // (-1 until then); dropped once gone or grown past that size
+    // the cells of earlier transitions' products, with their sizes right after the transition
+    // (-1 until remember() sees it); dropped once gone or grown past that size
     std::array<std::map<std::vector<int>, double>, 2> products_;
     int bodies_ = -1; // carry_over: the number of bodies the memory is for
     std::string refused_;             // why a due transition could not be made in this look
