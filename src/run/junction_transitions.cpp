@@ -15,6 +15,21 @@ namespace {
 /// after the transition (junction_transitions.h).
 constexpr double kProductShrink = 0.5;
 
+/// For this many looks after a transition, one that undoes it at the same two cells is made
+/// only when forced (junction_transitions.h).
+constexpr int kContactLooks = 10;
+
+std::string cell_name(int k) {
+    return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
+}
+
+/// The two cells a transition of `j` (a film's with `film`, else a line's T1) separates or
+/// joins by a film.
+std::vector<int> contact_of(const Junction& j, bool film) {
+    return film ? std::vector<int>{j.cells[0], j.cells[1]}
+                : std::vector<int>{j.cells[3], j.cells[4]};
+}
+
 /// The cells of what a T1 or an inverse T1 makes of a junction: a line (A, B, C; D, E)
 /// becomes a film (D, E; A, B, C) and back.
 std::vector<int> product_cells(const std::vector<int>& cells, bool film) {
@@ -75,8 +90,27 @@ void JunctionTransitions::carry_over(const std::vector<int>& original_body) {
         memory = std::move(out);
     };
     renumber(line_sizes_), renumber(film_sizes_), renumber(products_[0]), renumber(products_[1]);
-    new_look();
+    renumber(contacts_);
+    made_[0].clear(), made_[1].clear(), refused_.clear();
     bodies_ = static_cast<int>(original_body.size());
+}
+
+void JunctionTransitions::new_look() {
+    ++look_;
+    for (auto it = contacts_.begin(); it != contacts_.end();)
+        it = look_ - it->second >= kContactLooks ? contacts_.erase(it) : std::next(it);
+    made_[0].clear(), made_[1].clear(), refused_.clear();
+}
+
+std::string JunctionTransitions::undoes_recent(const std::vector<int>& pair, bool force) const {
+    const auto it = contacts_.find(pair);
+    if (it == contacts_.end() || force) return {};
+    const int ago = look_ - it->second;
+    const std::string when = ago == 0 ? "just made"
+                             : "made " + std::to_string(ago) + (ago == 1 ? " look" : " looks") +
+                                   " before (a step of evolve, a round of minimize)";
+    return "it would undo the transition between " + cell_name(pair[0]) + " and " +
+           cell_name(pair[1]) + " " + when;
 }
 
 bool JunctionTransitions::protected_product(const Junction& j, bool film) const {
@@ -103,16 +137,28 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
 
 namespace {
 
+bool on_border(const Cluster& c, int line, int film) {
+    const auto& s = c.triple_lines()[line].surfaces;
+    return std::find(s.begin(), s.end(), film) != s.end();
+}
+
 /// The triangular film that has triple line `line` on its border, or null. A T1 there would
 /// leave a two-sided film whose collapse then takes the film: the triangle's inverse T1 in
-/// two steps (the same cells meet in the end), which on a film of one facet (a T1's) the T1
-/// cannot even make.
+/// two steps (the same cells meet in the end), which is tried first.
 const Junction* triangle_beside(const Cluster& c, int line, const std::vector<Junction>& films) {
     for (const Junction& f : films)
-        if (f.sides() == 3)
-            for (int s : c.triple_lines()[line].surfaces)
-                if (s == f.id) return &f;
+        if (f.sides() == 3 && on_border(c, line, f.id)) return &f;
     return nullptr;
+}
+
+/// The lines on the border of triangular film `film`, shortest first.
+std::vector<Junction> sides_of(const Cluster& c, int film, const std::vector<Junction>& lines) {
+    std::vector<Junction> out;
+    for (const Junction& l : lines)
+        if (on_border(c, l.id, film)) out.push_back(l);
+    std::sort(out.begin(), out.end(),
+              [](const Junction& x, const Junction& y) { return x.size < y.size; });
+    return out;
 }
 
 } // namespace
@@ -125,39 +171,62 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
     const std::vector<Junction> small_films = films ? std::vector<Junction>{}
                                                     : junctions(c, true, original_body);
     for (const Junction& j : due(c, films, limit, force, original_body)) {
-        TransitionRecord record;
         const Junction* triangle = films ? nullptr : triangle_beside(c, j.id, small_films);
         if (triangle && protected_product(*triangle, true)) continue; // its side relaxes with it
-        const Junction& acted = triangle ? *triangle : j; // the junction that changes
-        const bool film = films || triangle;
-        try {
-            // the product is at least twice the limit in size where the mesh lets it be
-            const int id = acted.id;
-            Cluster changed = !film                ? t1_line_to_film(c, id, &record, 2 * limit)
-                              : acted.sides() == 3 ? t1_film_to_line(c, id, &record, 2 * limit)
-                                                   : collapse_two_sided_film(c, id, &record);
-            event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),
-                                    energy(changed)};
-            (film ? event.film : event.line) = id;
-            event.cells = record.cells;
-            for (int& k : event.cells)
-                if (k >= 0) k = original_body[k];
-            if (!film || acted.sides() == 3) { // the product: a film of a T1, a line of an inverse T1
-                made_[!film].insert(product_cells(acted.cells, film));
-                products_[!film][product_cells(acted.cells, film)] = -1;
-            }
-            return changed;
-        } catch (const TopologyError& x) {
-            std::string why = x.what();
-            for (const std::string op : {"t1: ", "t1_inverse: ", "collapse_two_sided_film: "})
-                if (why.rfind(op, 0) == 0) why.erase(0, op.size());
-            const char* what = !film                ? "no T1"
-                               : acted.sides() == 3 ? "no inverse T1"
-                                                    : "no collapse of a two-sided film";
-            refused_ = std::string(what) + " could be made: " + why;
-        }
+        // the triangle's inverse T1 first; should the mesh refuse it, the line's own T1 (the
+        // two-sided film it leaves collapses in a later look)
+        if (triangle)
+            if (auto changed = try_make(c, *triangle, true, force, limit, original_body, event))
+                return changed;
+        if (auto changed = try_make(c, j, films, force, limit, original_body, event)) return changed;
+        if (!films || j.sides() != 3) continue;
+        // a triangle the mesh will not collapse: a T1 on a side makes it a lens, which the
+        // collapse of two-sided films takes in a later look
+        for (const Junction& side : sides_of(c, j.id, junctions(c, false, original_body)))
+            if (auto changed = try_make(c, side, false, force, limit, original_body, event))
+                return changed;
     }
     return std::nullopt;
+}
+
+std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Junction& acted,
+                                                     bool film, bool force, double limit,
+                                                     const std::vector<int>& original_body,
+                                                     TransitionEvent& event) {
+    const char* what = !film                ? "no T1"
+                       : acted.sides() == 3 ? "no inverse T1"
+                                            : "no collapse of a two-sided film";
+    const std::vector<int> contact = contact_of(acted, film);
+    if (std::string why = undoes_recent(contact, force); !why.empty()) {
+        refused_ = std::string(what) + " could be made: " + why;
+        return std::nullopt;
+    }
+    TransitionRecord record;
+    try {
+        // the product is at least twice the limit in size where the mesh lets it be
+        const int id = acted.id;
+        Cluster changed = !film                ? t1_line_to_film(c, id, &record, 2 * limit)
+                          : acted.sides() == 3 ? t1_film_to_line(c, id, &record, 2 * limit)
+                                               : collapse_two_sided_film(c, id, &record);
+        event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),
+                                energy(changed)};
+        (film ? event.film : event.line) = id;
+        event.cells = record.cells;
+        for (int& k : event.cells)
+            if (k >= 0) k = original_body[k];
+        if (!film || acted.sides() == 3) { // the product: a film of a T1, a line of an inverse T1
+            made_[!film].insert(product_cells(acted.cells, film));
+            products_[!film][product_cells(acted.cells, film)] = -1;
+        }
+        contacts_[contact] = look_;
+        return changed;
+    } catch (const TopologyError& x) {
+        std::string why = x.what();
+        for (const std::string op : {"t1: ", "t1_inverse: ", "collapse_two_sided_film: "})
+            if (why.rfind(op, 0) == 0) why.erase(0, op.size());
+        refused_ = std::string(what) + " could be made: " + why;
+        return std::nullopt;
+    }
 }
 
 } // namespace froth

@@ -7,7 +7,10 @@
 /// shrunk below half its size right after it: a product is made larger than the
 /// limit where the mesh lets it be, and relaxes back by shrinking a little, which is not the
 /// shrinking of a junction on its way out (without this rule T1s and inverse T1s alternated at
-/// the same junction step after step in grain networks).
+/// the same junction step after step in grain networks). Nor may a transition undo what one
+/// did to the same two cells (a film between them made or removed) in the same look or the few
+/// after, unless forced (an edge collapsing): at a tangle of small junctions a T1 next to an
+/// inverse T1 otherwise restored the film it removed, look after look.
 
 #include "mesh/cluster.h"
 #include "run/topology_watch.h"
@@ -45,8 +48,9 @@ class JunctionTransitions {
 
     /// The sizes of c's junctions, for the next look.
     void remember(const Cluster& c, const std::vector<int>& original_body);
-    /// A new look (after a step): the products of the last look's transitions may be due again.
-    void new_look() { made_[0].clear(), made_[1].clear(), refused_.clear(); }
+    /// A new look (after a step): the products of the last look's transitions may be due
+    /// again, and what they did to two cells is one look older.
+    void new_look();
     /// Keeps the memory for the next run on the same cluster (evolve's calls one after the
     /// other behave as one long call): its keys go from the run's original body ids to the ids
     /// now (original_body: the original id of each body now), the junctions of popped bodies
@@ -71,6 +75,15 @@ class JunctionTransitions {
                                     const std::vector<int>& original_body) const;
     std::vector<Junction> due(const Cluster& c, bool films, double limit, bool force,
                               const std::vector<int>& original_body) const;
+    /// The transition of `acted` (a film's with `film`, else a line's T1), or none (then
+    /// refused_ says why).
+    std::optional<Cluster> try_make(const Cluster& c, const Junction& acted, bool film,
+                                    bool force, double limit,
+                                    const std::vector<int>& original_body,
+                                    TransitionEvent& event);
+    /// Why the transition of `acted` would undo one of the last kContactLooks looks (the same
+    /// two cells gain or lose a film), or empty; with `force` always empty.
+    std::string undoes_recent(const std::vector<int>& pair, bool force) const;
 
     double fraction_;
     // the sizes of the junctions at the last look, by their cells
@@ -85,6 +98,10 @@ class JunctionTransitions {
     // the cells of earlier transitions' products, with their sizes right after the transition
     // (-1 until remember() sees it); dropped once gone or grown past that size
     std::array<std::map<std::vector<int>, double>, 2> products_;
+    // the pairs of cells (sorted) a film between which a transition made or removed, with
+    // the look it did so in
+    std::map<std::vector<int>, int> contacts_;
+    int look_ = 0;
     int bodies_ = -1; // carry_over: the number of bodies the memory is for
     std::string refused_;             // why a due transition could not be made in this look
 };
