@@ -59,7 +59,7 @@ while c:time() < t_end do
     print(("step %4d  t = %.4f  energy %.6f  grains %d  transitions so far %d")
           :format(steps, c:time(), c:energy(), c:info().bodies,
                   (counts["T1"] or 0) + (counts["inverse T1"] or 0) + (counts["two-sided film"] or 0)
-                  + (counts["pop body"] or 0)))
+                  + (counts["pop body"] or 0) + (counts["absorb body"] or 0)))
   end
 end
 local seconds = os.clock() - clock

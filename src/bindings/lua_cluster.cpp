@@ -525,7 +525,8 @@ const luaL_Reg methods[] = {
 } // namespace
 
 /// evolve's `events`: {{kind, where, t, step, energy_before, energy_after; pops: body,
-/// neighbours; T1s: line, cells; inverse T1s: surface, cells}, ...}
+/// neighbours; absorbs: body, neighbours, into; T1s: line, cells; inverse T1s: surface,
+/// cells}, ...}
 void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& events) {
     lua_createtable(L, static_cast<int>(events.size()), 0);
     for (std::size_t i = 0; i < events.size(); ++i) {
@@ -540,6 +541,7 @@ void push_transition_events(lua_State* L, const std::vector<TransitionEvent>& ev
         if (e.body >= 0) {
             set_integer(L, "body", e.body + 1);
             set_integer(L, "neighbours", e.neighbours);
+            if (e.kind == "absorb body") set_integer(L, "into", e.cells[1] + 1);
         }
         if (e.line >= 0 || e.film >= 0) {
             if (e.line >= 0) set_integer(L, "line", e.line + 1);

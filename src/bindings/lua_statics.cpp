@@ -204,6 +204,27 @@ int l_pop_body(lua_State* L) {
     });
 }
 
+/// c:absorb_body(b [, into]) -> {body, into, neighbours, point, where, removed_vertices,
+/// removed_facets, energy_before, energy_after}: a vanishing cell joins a neighbour.
+int l_absorb_body(lua_State* L) {
+    ClusterHandle& h = self(L);
+    ChangeGuard changing(L, h, "absorb_body");
+    if (h.cluster.n_bodies() == 0) return luaL_error(L, "absorb_body: the cluster has no bodies");
+    const int b = check_id(L, 2, h.cluster.n_bodies(), "body", "bodies");
+    const int into = lua_isnoneornil(L, 3) ? -1
+                                           : check_id(L, 3, h.cluster.n_bodies(), "body", "bodies");
+    return guarded(L, [&] {
+        TransitionRecord record;
+        apply_transition(L, h, absorb_body(h.cluster, b, into, &record), record); // throws first
+        set_integer(L, "body", b + 1);
+        const int into_now = record.cells[1] - (record.cells[1] > b ? 1 : 0); // ids after b move down
+        set_integer(L, "into", into_now + 1);
+        set_integer(L, "neighbours", record.neighbours);
+        set_integer(L, "removed_facets", record.removed_facets);
+        return 1;
+    });
+}
+
 /// c:t1(line) -> {line, cells, point, where, removed_vertices, energy_before, energy_after}:
 /// a triple line between two quadruple points becomes a triangular film.
 int l_t1(lua_State* L) {
@@ -370,6 +391,7 @@ const luaL_Reg methods[] = {
     {"refine", l_refine},
     {"equiangulate", l_equiangulate},
     {"pop_body", l_pop_body},
+    {"absorb_body", l_absorb_body},
     {"t1", l_t1},
     {"t1_inverse", l_t1_inverse},
     {"collapse_two_sided_film", l_collapse_two_sided_film},

@@ -24,26 +24,6 @@ namespace {
 
 std::string body_name(int b) { return "pop_body: body " + std::to_string(b + 1); }
 
-/// The cells on the other side of b's films (-1: the outside).
-std::set<int> neighbour_cells(const Cluster& c, int b) {
-    std::vector<int> count(c.n_surfaces(), 0); // bodies listing each surface
-    std::vector<int> other(c.n_surfaces(), -1);
-    for (int k = 0; k < c.n_bodies(); ++k)
-        for (const BodyFace& f : c.bodies()[k].faces) {
-            ++count[f.surface];
-            if (k != b) other[f.surface] = k;
-        }
-    std::set<int> cells;
-    std::set<int> seen;
-    for (const BodyFace& f : c.bodies()[b].faces) {
-        if (!seen.insert(f.surface).second)
-            throw TopologyError(body_name(b) + " bounds surface " + std::to_string(f.surface + 1) +
-                                " on both sides: it wraps around the periodic box and cannot "
-                                "collapse to a point");
-        cells.insert(count[f.surface] > 1 ? other[f.surface] : -1);
-    }
-    return cells;
-}
 
 /// Refuses what a pop cannot take: walls, wires, fixed and curve vertices on the body.
 void check_free_body(const Cluster& c, int b, const std::vector<int>& vertices) {
@@ -108,6 +88,26 @@ UnwrappedBody unwrap_body(const Cluster& c, int b) {
 int plateau_junction_edges(int cells) { return cells == 4 ? 4 : cells == 3 ? 2 : 0; }
 
 } // namespace
+
+std::set<int> neighbour_cells(const Cluster& c, int b) {
+    std::vector<int> count(c.n_surfaces(), 0); // bodies listing each surface
+    std::vector<int> other(c.n_surfaces(), -1);
+    for (int k = 0; k < c.n_bodies(); ++k)
+        for (const BodyFace& f : c.bodies()[k].faces) {
+            ++count[f.surface];
+            if (k != b) other[f.surface] = k;
+        }
+    std::set<int> cells;
+    std::set<int> seen;
+    for (const BodyFace& f : c.bodies()[b].faces) {
+        if (!seen.insert(f.surface).second)
+            throw TopologyError(body_name(b) + " bounds surface " + std::to_string(f.surface + 1) +
+                                " on both sides: it wraps around the periodic box and cannot "
+                                "collapse to a point");
+        cells.insert(count[f.surface] > 1 ? other[f.surface] : -1);
+    }
+    return cells;
+}
 
 Cluster pop_body(const Cluster& c, int b, TransitionRecord* record) {
     if (b < 0 || b >= c.n_bodies())

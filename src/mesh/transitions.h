@@ -7,28 +7,34 @@
 #include "mesh/cluster.h"
 
 #include <optional>
+#include <set>
 #include <string>
 
 namespace froth {
 
 /// What a transition did, for event lists and messages.
 struct TransitionRecord {
-    std::string kind;    ///< "pop body", "T1", "inverse T1", "two-sided film"
+    std::string kind;    ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film"
     std::string where;   ///< for people: "body 3 (volume 1e-05, 4 neighbouring cells) at (x, y, z)"
-    int body = -1;       ///< pop: the body that vanished (0-based, its id before the pop)
+    int body = -1;       ///< pop, absorb: the body that vanished (0-based, its id before)
     int line = -1;       ///< T1: the triple line that became a film (0-based, before)
     int film = -1;       ///< inverse T1, two-sided film: the film that went (0-based, before)
     /// T1: the bodies the new film lies between; inverse T1: those the film lay between
-    /// (-1: outside)
+    /// (-1: outside); absorb: the body and the one that absorbed it
     std::array<int, 2> cells{-1, -1};
     Vec3 point = Vec3::Zero(); ///< where it collapsed
-    int neighbours = 0;  ///< pop: the cells around it (the outside counts as one)
+    int neighbours = 0;  ///< pop, absorb: the cells around it (the outside counts as one)
     int removed_vertices = 0, removed_facets = 0;
 };
 
 /// The bodies on the two sides of each surface (-1: the outside or nothing; a film between a
 /// cell and its own periodic image has it on both sides).
 std::vector<std::array<int, 2>> surface_cells(const Cluster& c);
+
+/// The cells on the other side of body `body`'s films (-1: the outside).
+/// \throw TopologyError for a body that bounds a surface on both sides (it wraps around the
+/// periodic box).
+std::set<int> neighbour_cells(const Cluster& c, int body);
 
 /// Evolver's `pop` of a vanishing cell: body `body` collapses to one point, its films go, and
 /// the films around it close over the point. That point is a Plateau point exactly when the
@@ -47,6 +53,23 @@ std::vector<std::array<int, 2>> surface_cells(const Cluster& c);
 /// the cluster has, or whose collapse would pinch a neighbouring film at the point (a mesh too
 /// coarse around it).
 Cluster pop_body(const Cluster& c, int body, TransitionRecord* record = nullptr);
+
+/// A vanishing body that cannot pop joins a neighbour: body `body`'s films with `into` (-1:
+/// the body it shares the most film area with, or the next where joining that one would make
+/// no valid cluster, e.g. a cell that meets `body` twice, once through a periodic box) go, its other films become `into`'s, and
+/// where one of them meets a film of `into` along a line of the films that went, the two join
+/// into one film (the one of lower id, with its tension, anisotropy and mobility; the other's
+/// facets turned to face its way). No vertex moves: the energy falls by the tension of the
+/// films that went (equal tensions) and `into`'s volume grows by exactly `body`'s. The lines
+/// of the films that went stop being triple lines and their quadruple points become points of
+/// `into`'s lines. Bodies after `body` move down one id, surfaces after the ones that went or
+/// joined keep their order; reference volumes are kept, targets become the volumes after.
+/// The event kind is "absorb body".
+/// 	hrow InvalidInput for a body id out of range or an `into` that is not another body;
+/// TopologyError (naming the body and why, nothing changed) for a body that meets walls or
+/// wires, wraps around a periodic box, does not meet `into` (or, with -1, any other body), or
+/// whose joined films would not make a valid cluster.
+Cluster absorb_body(const Cluster& c, int body, int into = -1, TransitionRecord* record = nullptr);
 
 /// The T1 of foams in 3D (the I -> H transition): triple line `line`, a chain of junction
 /// edges between two distinct quadruple points a and b, with cells A, B, C around it and a

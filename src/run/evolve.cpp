@@ -19,6 +19,21 @@
 namespace froth {
 namespace {
 
+/// A transition's error message without the operation's name in front ("pop_body: ").
+std::string without_operation(std::string text) {
+    for (const std::string op : {"pop_body: ", "absorb_body: "})
+        if (text.rfind(op, 0) == 0) text.erase(0, op.size());
+    return text;
+}
+
+/// sum sigma |face| over the films of body b (isotropic tensions).
+double film_tension(const Cluster& c, int b) {
+    const std::vector<double> areas = surface_areas(c);
+    double sum = 0;
+    for (const BodyFace& f : c.bodies()[b].faces) sum += c.surface(f.surface).sigma * areas[f.surface];
+    return sum;
+}
+
 using Clock = std::chrono::steady_clock;
 
 void check_options(const EvolveOptions& o) {
@@ -253,6 +268,9 @@ class Run {
     bool watch_for_topology() {
         std::optional<TopologyEvent> e;
         junctions_.new_look();
+        // the caps' moves once a step: moved again, a cap next to a line can stay a cap, and
+        // the needles' collapse after them must get its turn
+        bool caps_relaxed = false;
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
             if (o_.transitions && made < kMaxTransitionsPerStep &&
@@ -266,7 +284,8 @@ class Run {
                  transition_junction(false, true) || remove_valence_three()))
                 continue;
             if (e->kind == "collapsing facet" &&
-                (flip_edges() || relax_caps() || collapse_needles()))
+                (flip_edges() || (!caps_relaxed && (caps_relaxed = relax_caps())) ||
+                 collapse_needles()))
                 continue;
             break;
         }
@@ -392,31 +411,43 @@ class Run {
             history_.push_back(history_row(make_report(c_), 0));
     }
 
-    /// Pops the vanishing body of event e; false (and the reason added to e's message) if it
-    /// cannot pop or the pop would raise the energy. The stepper starts afresh on the new mesh.
+    /// Pops the vanishing body of event e; one with more than four neighbours, or whose pop
+    /// the mesh refuses or would raise the energy, joins its largest neighbour instead
+    /// (absorb_body). False (and the reasons added to e's message) if neither can be made.
+    /// The stepper starts afresh on the new mesh.
     bool pop(TopologyEvent& e) {
-        TransitionRecord record;
-        std::optional<Cluster> popped;
-        try {
-            popped.emplace(pop_body(c_, e.body, &record));
-        } catch (const TopologyError& x) {
-            std::string why = x.what();
-            if (why.rfind("pop_body: ", 0) == 0) why.erase(0, 10);
-            e.message += "; it cannot pop: " + why;
-            return false;
+        std::string why_not[2]; // why it cannot pop, why it cannot join a neighbour
+        for (const bool absorb : {false, true}) {
+            TransitionRecord record;
+            std::optional<Cluster> changed;
+            try {
+                const std::size_t neighbours = neighbour_cells(c_, e.body).size();
+                if (absorb) changed.emplace(absorb_body(c_, e.body, -1, &record));
+                else if (neighbours <= 4) changed.emplace(pop_body(c_, e.body, &record));
+                else why_not[0] = std::to_string(neighbours) + " neighbouring cells";
+            } catch (const TopologyError& x) {
+                why_not[absorb] = without_operation(x.what());
+            }
+            if (!changed) continue;
+            // the surgery around a cell at the mesh's scale moves its neighbours' films a
+            // little: a rise within a hundredth of the cell's own films' tension is round-off,
+            // not a cell too large to pop
+            const double before = energy(c_), after = energy(*changed);
+            if (after > before + 0.01 * film_tension(c_, e.body)) {
+                why_not[absorb] = "it would raise the energy from " + fmt(before) + " to " + fmt(after);
+                continue;
+            }
+            const int original = original_body_[e.body];
+            TransitionEvent event{record.kind, record.where, c_.time(), r_.steps, original,
+                                  record.neighbours, before, after};
+            if (absorb) event.cells = {original, original_body_[record.cells[1]]};
+            r_.events.push_back(std::move(event));
+            original_body_.erase(original_body_.begin() + e.body);
+            replace_cluster(std::move(*changed));
+            return true;
         }
-        const double before = energy(c_), after = energy(*popped);
-        if (after > before) {
-            e.message += "; popping it would raise the energy from " + fmt(before) + " to " +
-                         fmt(after);
-            return false;
-        }
-        const int original = original_body_[e.body];
-        r_.events.push_back({record.kind, record.where, c_.time(), r_.steps, original,
-                             record.neighbours, before, after});
-        original_body_.erase(original_body_.begin() + e.body);
-        replace_cluster(std::move(*popped));
-        return true;
+        e.message += "; it cannot pop (" + why_not[0] + ") nor join a neighbour (" + why_not[1] + ")";
+        return false;
     }
 
     void write_output(const StepReport& s) {

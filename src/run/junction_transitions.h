@@ -26,17 +26,18 @@ namespace froth {
 
 /// A topological transition a run made.
 struct TransitionEvent {
-    std::string kind;  ///< "pop body", "T1", "inverse T1"
+    std::string kind;  ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film"
     std::string where; ///< what and where, for people (TransitionRecord::where)
     double t = 0;      ///< the model time of the transition
     int step = 0;      ///< it followed this step (evolve) or round (minimize) of the run (1-based)
-    int body = -1;     ///< pop: the body that went, as numbered at the start of the run (0-based)
-    int neighbours = 0; ///< pop: the cells around it (the outside counts as one)
+    int body = -1;     ///< pop, absorb: the body that went, as numbered at the start of the run (0-based)
+    int neighbours = 0; ///< pop, absorb: the cells around it (the outside counts as one)
     double energy_before = 0, energy_after = 0;
     int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)
     int film = -1;     ///< inverse T1: the film that became a line (0-based, its id before)
-    /// T1: the bodies the new film lies between; inverse T1: those the film lay between; as
-    /// numbered at the start of the run (-1: the outside)
+    /// T1: the bodies the new film lies between; inverse T1: those the film lay between;
+    /// absorb: the body and the one it joined; as numbered at the start of the run (-1: the
+    /// outside)
     std::array<int, 2> cells{-1, -1};
 };
 

@@ -20,7 +20,9 @@ struct WatchOptions {
     double min_edge_fraction = 0.02;
     /// Set by evolve with transitions: an edge that is a whole triple line between two
     /// quadruple points collapses only below a tenth of that (a T1 is due long before; a line
-    /// an inverse T1 made in a finely meshed corner may start that short).
+    /// an inverse T1 made in a finely meshed corner may start that short), and a facet angle
+    /// facing such an edge counts ten times its size against min_facet_angle (the needles
+    /// beside a short line are the line's T1's to remove, not a facet collapsing).
     bool lines_to_transitions = false;
     /// A facet corner angle below this (degrees) means a facet is collapsing; on a surface
     /// with a nearly crystalline anisotropy (Anisotropy::nearly_crystalline) a tenth of it:
