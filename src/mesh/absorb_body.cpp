@@ -18,6 +18,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <utility>
 
 namespace froth {
 namespace {
@@ -67,43 +68,49 @@ std::vector<double> surface_areas_here(const Cluster& c) {
     return areas;
 }
 
-/// absorb_body into body n, a neighbour of b.
-Cluster absorb_into(const Cluster& c, int b, int n, const std::vector<std::array<int, 2>>& cells,
-                    const std::vector<double>& areas, int n_neighbours,
-                    TransitionRecord* record) {
-    // the films between b and n go; across each of their lines, b's film and n's join
-    std::vector<char> gone(c.n_surfaces(), 0);
+/// The films of b that go (those with n) and the groups of films that join: across each line
+/// of a film that goes, the two films left.
+struct Plan {
+    std::vector<char> gone;
+    Groups groups;
     double gone_area = 0;
+};
+
+Plan plan(const Cluster& c, int b, int n, const std::vector<std::array<int, 2>>& cells,
+          const std::vector<double>& areas) {
+    Plan p{std::vector<char>(c.n_surfaces(), 0), Groups(c.n_surfaces())};
     for (const BodyFace& f : c.bodies()[b].faces)
         if (cells[f.surface][0] == n || cells[f.surface][1] == n)
-            gone[f.surface] = 1, gone_area += areas[f.surface];
-    Groups groups(c.n_surfaces());
+            p.gone[f.surface] = 1, p.gone_area += areas[f.surface];
     for (const TripleLine& tl : c.triple_lines()) {
-        if (std::none_of(tl.surfaces.begin(), tl.surfaces.end(), [&](int s) { return gone[s]; }))
-            continue;
         std::vector<int> kept;
         for (int s : tl.surfaces)
-            if (!gone[s]) kept.push_back(s);
-        if (kept.size() == 2) groups.join(kept[0], kept[1]);
+            if (!p.gone[s]) kept.push_back(s);
+        if (kept.size() == 2) p.groups.join(kept[0], kept[1]);
     }
-    // each joined film keeps the orientation of its representative, as seen from b + n
+    return p;
+}
+
+/// spec's surfaces after the plan: each group as one surface (its lowest id's, in the order
+/// of those ids), the members' facets turned where their sign seen from b + n differs from
+/// the representative's. surface_id: each old surface's new id (-1: gone).
+void join_surfaces(const Cluster& c, int b, int n, Plan& p, ClusterSpec& spec,
+                   std::vector<int>& surface_id, std::vector<int>& kept_surfaces) {
     const auto sign_from_merged = [&](int s) {
         const int from_b = sign_of(c, b, s);
         return from_b != 0 ? from_b : sign_of(c, n, s);
     };
-
-    ClusterSpec spec = cluster_spec(c);
     std::vector<ClusterSpec::Surface> surfaces;
-    std::vector<int> surface_id(c.n_surfaces(), -1), kept_surfaces;
+    surface_id.assign(c.n_surfaces(), -1);
     for (int s = 0; s < c.n_surfaces(); ++s) { // the representatives first, in order
-        if (gone[s] || groups.find(s) != s) continue;
+        if (p.gone[s] || p.groups.find(s) != s) continue;
         surface_id[s] = static_cast<int>(surfaces.size());
         kept_surfaces.push_back(s);
         surfaces.push_back(spec.surfaces[s]);
     }
     for (int s = 0; s < c.n_surfaces(); ++s) {
-        const int rep = groups.find(s);
-        if (gone[s] || rep == s) continue;
+        const int rep = p.groups.find(s);
+        if (p.gone[s] || rep == s) continue;
         surface_id[s] = surface_id[rep];
         ClusterSpec::Surface& to = surfaces[surface_id[rep]];
         const ClusterSpec::Surface& from = spec.surfaces[s];
@@ -112,14 +119,18 @@ Cluster absorb_into(const Cluster& c, int b, int n, const std::vector<std::array
             Tri t = from.triangles[f];
             if (flip) std::swap(t[1], t[2]);
             to.triangles.push_back(t);
-            if (spec.period) {
-                auto k = from.offsets.empty() ? std::array<Offset, 3>{} : from.offsets[f];
-                if (flip) std::swap(k[1], k[2]);
-                to.offsets.push_back(k);
-            }
+            if (!spec.period) continue;
+            auto k = from.offsets.empty() ? std::array<Offset, 3>{} : from.offsets[f];
+            if (flip) std::swap(k[1], k[2]);
+            to.offsets.push_back(k);
         }
     }
     spec.surfaces = std::move(surfaces);
+}
+
+/// spec's bodies: c's but b, n with b's films too, through surface_id.
+void list_bodies(const Cluster& c, int b, int n, const std::vector<int>& surface_id,
+                 ClusterSpec& spec) {
     spec.bodies.clear();
     spec.volconst.clear();
     std::vector<char> listed(spec.surfaces.size(), 0);
@@ -138,40 +149,42 @@ Cluster absorb_into(const Cluster& c, int b, int n, const std::vector<std::array
         spec.bodies.push_back(std::move(ids));
         spec.volconst.push_back(c.bodies()[k].volconst);
     }
-    std::vector<Vec3> V = c.positions();
-    const std::vector<int> used = surgery::keep_used_vertices(spec, V);
+}
+
+void describe(const Cluster& c, int b, int n, int n_neighbours, const Plan& p, const Cluster& r,
+              TransitionRecord& record) {
+    record.kind = "absorb body";
+    record.body = b;
+    record.neighbours = n_neighbours;
+    record.cells = {b, n};
+    record.removed_vertices = c.n_vertices() - r.n_vertices();
+    record.removed_facets = c.n_facets() - r.n_facets();
+    for (int s = 0; s < c.n_surfaces(); ++s) // a point of the films that went
+        if (p.gone[s]) {
+            record.point = c.position(c.surface(s).triangles.front()[0]);
+            break;
+        }
+    record.where = "body " + std::to_string(b + 1) + " (volume " +
+                   fmt(body_volume(c, c.bodies()[b], c.positions())) + ", " +
+                   std::to_string(n_neighbours) + " neighbouring cells) joined body " +
+                   std::to_string(n + 1) + " at " + point_text(record.point) +
+                   ": their films of area " + fmt(p.gone_area) + " went";
+}
+
+/// absorb_body into body n, a neighbour of b.
+Cluster absorb_into(const Cluster& c, int b, int n, const std::vector<std::array<int, 2>>& cells,
+                    const std::vector<double>& areas, int n_neighbours,
+                    TransitionRecord* record) {
+    Plan p = plan(c, b, n, cells, areas);
+    ClusterSpec spec = cluster_spec(c);
+    std::vector<int> surface_id, kept_surfaces;
+    join_surfaces(c, b, n, p, spec, surface_id, kept_surfaces);
+    list_bodies(c, b, n, surface_id, spec);
+    const std::vector<int> used = surgery::keep_used_vertices(spec, c.positions());
     surgery::copy_vertex_lists(c, [&](int old) { return used[old]; }, spec);
     Cluster r = surgery::rebuild(std::move(spec), body_name(b), "absorbing it");
-
-    for (std::size_t i = 0; i < kept_surfaces.size(); ++i) {
-        r.set_anisotropy(static_cast<int>(i), c.surface(kept_surfaces[i]).gamma);
-        r.set_mobility(static_cast<int>(i), c.surface(kept_surfaces[i]).beta);
-    }
-    r.set_time(c.time());
-    std::vector<double> initial, target;
-    for (int k = 0; k < c.n_bodies(); ++k)
-        if (k != b) initial.push_back(c.initial_volumes()[k]);
-    for (const Body& body : r.bodies()) target.push_back(body_volume(r, body, r.positions()));
-    r.set_volume_references(std::move(initial), std::move(target));
-
-    if (record) {
-        const double volume = body_volume(c, c.bodies()[b], c.positions());
-        record->kind = "absorb body";
-        record->body = b;
-        record->neighbours = n_neighbours;
-        record->cells = {b, n};
-        record->removed_vertices = c.n_vertices() - r.n_vertices();
-        record->removed_facets = c.n_facets() - r.n_facets();
-        for (int s = 0; s < c.n_surfaces(); ++s) // a point of the films that went
-            if (gone[s]) {
-                record->point = c.position(c.surface(s).triangles.front()[0]);
-                break;
-            }
-        record->where = "body " + std::to_string(b + 1) + " (volume " + fmt(volume) + ", " +
-                        std::to_string(n_neighbours) + " neighbouring cells) joined body " +
-                        std::to_string(n + 1) + " at " + point_text(record->point) +
-                        ": their films of area " + fmt(gone_area) + " went";
-    }
+    surgery::carry_over_without_body(c, b, kept_surfaces, r);
+    if (record) describe(c, b, n, n_neighbours, p, r, *record);
     return r;
 }
 

@@ -52,6 +52,20 @@ Cluster rebuild(ClusterSpec spec, const std::string& what, const std::string& su
     return std::move(*r);
 }
 
+void carry_over_without_body(const Cluster& c, int gone, const std::vector<int>& kept_surfaces,
+                             Cluster& r) {
+    for (std::size_t i = 0; i < kept_surfaces.size(); ++i) {
+        r.set_anisotropy(static_cast<int>(i), c.surface(kept_surfaces[i]).gamma);
+        r.set_mobility(static_cast<int>(i), c.surface(kept_surfaces[i]).beta);
+    }
+    r.set_time(c.time());
+    std::vector<double> initial, target;
+    for (int k = 0; k < c.n_bodies(); ++k)
+        if (k != gone) initial.push_back(c.initial_volumes()[k]);
+    for (const Body& body : r.bodies()) target.push_back(body_volume(r, body, r.positions()));
+    r.set_volume_references(std::move(initial), std::move(target));
+}
+
 void check_one_fan(const std::vector<std::pair<int, int>>& link, int surface,
                    const std::string& what) {
     if (link.empty()) return;

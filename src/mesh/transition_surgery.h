@@ -29,6 +29,12 @@ void copy_vertex_lists(const Cluster& c, const std::function<int(int)>& map, Clu
 /// cluster after <surgery> is not valid: ...".
 Cluster rebuild(ClusterSpec spec, const std::string& what, const std::string& surgery);
 
+/// r, made from c without body `gone` (its surface i from c's kept_surfaces[i]): those
+/// surfaces' anisotropies and mobilities, c's time, the other bodies' reference volumes, and
+/// targets that are the volumes now.
+void carry_over_without_body(const Cluster& c, int gone, const std::vector<int>& kept_surfaces,
+                             Cluster& r);
+
 /// In one surface, the facets at a point P given by their link edges x -> y (the corners after
 /// P in the facet's order) must form one fan: a path or a cycle. Two fans would pinch the film
 /// at P. \throw TopologyError "<what>: ... surface N ..."

@@ -210,16 +210,7 @@ Cluster pop_body(const Cluster& c, int b, TransitionRecord* record) {
                             " triple-line edges, not as at a Plateau point; refine the mesh "
                             "around the body first");
 
-    for (std::size_t i = 0; i < kept_surfaces.size(); ++i) {
-        r.set_anisotropy(static_cast<int>(i), c.surface(kept_surfaces[i]).gamma);
-        r.set_mobility(static_cast<int>(i), c.surface(kept_surfaces[i]).beta);
-    }
-    r.set_time(c.time());
-    std::vector<double> initial, target;
-    for (int k = 0; k < c.n_bodies(); ++k)
-        if (k != b) initial.push_back(c.initial_volumes()[k]);
-    for (const Body& body : r.bodies()) target.push_back(body_volume(r, body, r.positions()));
-    r.set_volume_references(std::move(initial), std::move(target));
+    surgery::carry_over_without_body(c, b, kept_surfaces, r);
 
     if (record) {
         const double volume = body_volume(c, c.bodies()[b], c.positions());
