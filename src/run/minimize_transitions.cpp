@@ -34,11 +34,14 @@ int make_transitions(Cluster& c, JunctionTransitions& junctions, bool force, int
 }
 
 /// A facet with a corner angle below 0.1 degree (a tenth of minimize's collapse limit) that
-/// the transitions and the upkeep left, named (the next round would start degenerate).
+/// the transitions and the upkeep left, named (the next round would start degenerate); as in
+/// evolve with transitions, an angle facing a one-edge line between quadruple points counts
+/// ten times (that line's T1 removes the needle).
 std::optional<std::string> sliver_left(const Cluster& c) {
     WatchOptions w;
     w.min_volume_fraction = 0;
     w.min_edge_fraction = 0;
+    w.lines_to_transitions = true;
     w.min_facet_angle = 0.1;
     w.self_intersection_every = 0;
     const std::optional<TopologyEvent> e = TopologyWatch(w).check(c, 0);
