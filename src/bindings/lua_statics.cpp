@@ -217,7 +217,8 @@ int l_absorb_body(lua_State* L) {
         TransitionRecord record;
         apply_transition(L, h, absorb_body(h.cluster, b, into, &record), record); // throws first
         set_integer(L, "body", b + 1);
-        const int into_now = record.cells[1] - (record.cells[1] > b ? 1 : 0); // ids after b move down
+        // the bodies after b move down one
+        const int into_now = record.cells[1] - (record.cells[1] > b ? 1 : 0);
         set_integer(L, "into", into_now + 1);
         set_integer(L, "neighbours", record.neighbours);
         set_integer(L, "removed_facets", record.removed_facets);

@@ -56,16 +56,16 @@ Cluster pop_body(const Cluster& c, int body, TransitionRecord* record = nullptr)
 
 /// A vanishing body that cannot pop joins a neighbour: body `body`'s films with `into` (-1:
 /// the body it shares the most film area with, or the next where joining that one would make
-/// no valid cluster, e.g. a cell that meets `body` twice, once through a periodic box) go, its other films become `into`'s, and
-/// where one of them meets a film of `into` along a line of the films that went, the two join
-/// into one film (the one of lower id, with its tension, anisotropy and mobility; the other's
+/// no valid cluster, e.g. a cell that meets `body` twice, once through a periodic box) go,
+/// its other films become `into`'s, and where one of them meets a film of `into` along a line
+/// of the films that went, the two join into one film (the one of lower id, with its tension, anisotropy and mobility; the other's
 /// facets turned to face its way). No vertex moves: the energy falls by the tension of the
 /// films that went (equal tensions) and `into`'s volume grows by exactly `body`'s. The lines
 /// of the films that went stop being triple lines and their quadruple points become points of
 /// `into`'s lines. Bodies after `body` move down one id, surfaces after the ones that went or
 /// joined keep their order; reference volumes are kept, targets become the volumes after.
 /// The event kind is "absorb body".
-/// 	hrow InvalidInput for a body id out of range or an `into` that is not another body;
+/// \throw InvalidInput for a body id out of range or an `into` that is not another body;
 /// TopologyError (naming the body and why, nothing changed) for a body that meets walls or
 /// wires, wraps around a periodic box, does not meet `into` (or, with -1, any other body), or
 /// whose joined films would not make a valid cluster.

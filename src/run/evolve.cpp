@@ -30,7 +30,8 @@ std::string without_operation(std::string text) {
 double film_tension(const Cluster& c, int b) {
     const std::vector<double> areas = surface_areas(c);
     double sum = 0;
-    for (const BodyFace& f : c.bodies()[b].faces) sum += c.surface(f.surface).sigma * areas[f.surface];
+    for (const BodyFace& f : c.bodies()[b].faces)
+        sum += c.surface(f.surface).sigma * areas[f.surface];
     return sum;
 }
 
@@ -434,7 +435,8 @@ class Run {
             // not a cell too large to pop
             const double before = energy(c_), after = energy(*changed);
             if (after > before + 0.01 * film_tension(c_, e.body)) {
-                why_not[absorb] = "it would raise the energy from " + fmt(before) + " to " + fmt(after);
+                why_not[absorb] =
+                    "it would raise the energy from " + fmt(before) + " to " + fmt(after);
                 continue;
             }
             const int original = original_body_[e.body];
@@ -446,7 +448,8 @@ class Run {
             replace_cluster(std::move(*changed));
             return true;
         }
-        e.message += "; it cannot pop (" + why_not[0] + ") nor join a neighbour (" + why_not[1] + ")";
+        e.message +=
+            "; it cannot pop (" + why_not[0] + ") nor join a neighbour (" + why_not[1] + ")";
         return false;
     }
 

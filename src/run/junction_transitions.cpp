@@ -178,7 +178,8 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
         if (triangle)
             if (auto changed = try_make(c, *triangle, true, force, limit, original_body, event))
                 return changed;
-        if (auto changed = try_make(c, j, films, force, limit, original_body, event)) return changed;
+        if (auto changed = try_make(c, j, films, force, limit, original_body, event))
+            return changed;
         if (!films || j.sides() != 3) continue;
         // a triangle the mesh will not collapse: a T1 on a side makes it a lens, which the
         // collapse of two-sided films takes in a later look

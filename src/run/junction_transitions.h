@@ -30,7 +30,8 @@ struct TransitionEvent {
     std::string where; ///< what and where, for people (TransitionRecord::where)
     double t = 0;      ///< the model time of the transition
     int step = 0;      ///< it followed this step (evolve) or round (minimize) of the run (1-based)
-    int body = -1;     ///< pop, absorb: the body that went, as numbered at the start of the run (0-based)
+    /// pop, absorb: the body that went, as numbered at the start of the run (0-based)
+    int body = -1;
     int neighbours = 0; ///< pop, absorb: the cells around it (the outside counts as one)
     double energy_before = 0, energy_after = 0;
     int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)

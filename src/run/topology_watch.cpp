@@ -68,8 +68,9 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
                 // the angle at corner k faces the edge k+1 -> k+2: at a needle on a one-edge
                 // line the line's T1 removes it, so the angle is judged as that edge is
                 const double angle = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
-                const bool at_line = line_factor < 1 &&
-                                     quadruple_line_edge(c, tris[f][(k + 1) % 3], tris[f][(k + 2) % 3]);
+                const bool at_line =
+                    line_factor < 1 &&
+                    quadruple_line_edge(c, tris[f][(k + 1) % 3], tris[f][(k + 2) % 3]);
                 const double ratio = angle / (at_line ? line_factor : 1) / limit;
                 if (ratio < angle_ratio)
                     angle_ratio = ratio, smallest_angle = angle, s_angle = i, f_angle = f;
