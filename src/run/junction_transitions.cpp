@@ -19,6 +19,11 @@ constexpr double kProductShrink = 0.5;
 /// only when forced (junction_transitions.h).
 constexpr int kContactLooks = 10;
 
+/// A film whose mean width (2 area / perimeter) is below this fraction of the T1 length is
+/// squeezed flat whatever its perimeter, and due: an equilateral triangle at the perimeter
+/// limit is 0.29 of it wide.
+constexpr double kThinFilm = 0.1;
+
 std::string cell_name(int k) {
     return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
 }
@@ -124,11 +129,13 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
     const auto& memory = films ? film_sizes_ : line_sizes_;
     std::vector<Junction> out;
     for (Junction& j : junctions(c, films, original_body)) {
-        if (!(j.size < (films ? j.sides() : 1) * limit)) continue;
+        const bool flat = films && j.width < kThinFilm * limit; // due shrinking or not
+        if (!(j.size < (films ? j.sides() : 1) * limit) && !flat) continue;
         if (made_[films].count(j.cells)) continue; // a product of this look's transitions
         if (protected_product(j, films)) continue;
         const auto was = memory.find(j.cells);
-        if (force || (was != memory.end() && j.size < was->second)) out.push_back(std::move(j));
+        if (force || flat || (was != memory.end() && j.size < was->second))
+            out.push_back(std::move(j));
     }
     std::sort(out.begin(), out.end(),
               [](const Junction& x, const Junction& y) { return x.size < y.size; });

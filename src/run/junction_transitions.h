@@ -3,10 +3,11 @@
 /// transitions): which junctions are due, and the transition of one. A junction is due when it
 /// is small (a triple line between quadruple points shorter than min_line_fraction of the mean
 /// edge, a triangular film of perimeter below three times that) and has shrunk since the last
-/// look; what a transition makes is not due in the same look, and later only once it has
-/// shrunk below half its size right after it: a product is made larger than the
-/// limit where the mesh lets it be, and relaxes back by shrinking a little, which is not the
-/// shrinking of a junction on its way out (without this rule T1s and inverse T1s alternated at
+/// look, or is a film squeezed flat (mean width below a tenth of the line limit, shrinking
+/// or not). What a transition makes is not due in the same look, and later only once it has
+/// shrunk below half its size right after it: a product is made larger than the limit where
+/// the mesh lets it be, and relaxes back by shrinking a little, which is not the shrinking of
+/// a junction on its way out (without this rule T1s and inverse T1s alternated at
 /// the same junction step after step in grain networks). Nor may a transition undo what one
 /// did to the same two cells (a film between them made or removed) in the same look or the few
 /// after, unless forced (an edge collapsing): at a tangle of small junctions a T1 next to an

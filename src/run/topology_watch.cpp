@@ -189,6 +189,12 @@ std::vector<Junction> collapsible_films(const Cluster& c) {
         }
         if (!ok || sides.size() != n) continue;
         j.cells.insert(j.cells.end(), sides.begin(), sides.end());
+        double area = 0;
+        for (std::size_t f = 0; f < c.surface(s).triangles.size(); ++f) {
+            const auto x = c.surface(s).corners(c.positions(), f);
+            area += 0.5 * (x[1] - x[0]).cross(x[2] - x[0]).norm();
+        }
+        j.width = 2 * area / j.size;
         out.push_back(std::move(j));
     }
     return out;

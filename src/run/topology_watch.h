@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <cmath>
 #include <vector>
 
 namespace froth {
@@ -62,6 +63,8 @@ struct Junction {
     /// line: the three cells around it sorted, then the two at its ends sorted; film: its two
     /// cells sorted, then the three (two) of its sides sorted (body ids, -1 the outside)
     std::vector<int> cells;
+    /// a film's mean width, 2 area / perimeter (near 0 for a film squeezed flat)
+    double width = INFINITY;
     /// the number of sides of a film
     int sides() const { return static_cast<int>(cells.size()) - 2; }
 };
