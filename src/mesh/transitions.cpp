@@ -24,7 +24,6 @@ namespace {
 
 std::string body_name(int b) { return "pop_body: body " + std::to_string(b + 1); }
 
-
 /// Refuses what a pop cannot take: walls, wires, fixed and curve vertices on the body.
 void check_free_body(const Cluster& c, int b, const std::vector<int>& vertices) {
     if (!c.bodies()[b].lids.empty())

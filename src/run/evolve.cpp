@@ -422,10 +422,13 @@ class Run {
             TransitionRecord record;
             std::optional<Cluster> changed;
             try {
-                const std::size_t neighbours = neighbour_cells(c_, e.body).size();
-                if (absorb) changed.emplace(absorb_body(c_, e.body, -1, &record));
-                else if (neighbours <= 4) changed.emplace(pop_body(c_, e.body, &record));
-                else why_not[0] = std::to_string(neighbours) + " neighbouring cells";
+                if (absorb) {
+                    changed.emplace(absorb_body(c_, e.body, -1, &record));
+                } else if (const std::size_t n = neighbour_cells(c_, e.body).size(); n > 4) {
+                    why_not[0] = std::to_string(n) + " neighbouring cells";
+                } else {
+                    changed.emplace(pop_body(c_, e.body, &record));
+                }
             } catch (const TopologyError& x) {
                 why_not[absorb] = without_operation(x.what());
             }

@@ -5,9 +5,9 @@
 
 #include "mesh/cluster.h"
 
+#include <cmath>
 #include <optional>
 #include <string>
-#include <cmath>
 #include <vector>
 
 namespace froth {

@@ -1,6 +1,6 @@
 -- Regression: the 27-grain network of grain_growth_mcf.lua run on to T = 0.7 (350 MCF steps,
--- about 50 s), through its first vanishing grains. They reach the mesh's scale flattened,
--- with 6 to 8 neighbours, before their faces have shrunk away, so they cannot pop; each joins
+-- about 35 s), through its first vanishing grains. They reach the mesh's scale flattened,
+-- with more than four neighbours (grain 6: 8), before their faces have shrunk away, so they cannot pop; each joins
 -- the neighbour it shares the most film with (absorb), and the run goes on. Measured
 -- 2026-12-06 with datafiles/grain_growth.lua n=27 seed=2 lloyd=5 T=2: grain 6 absorbed at
 -- t = 0.642 and a second grain later, stop at t = 0.73. Before the absorb the run stopped at
