@@ -162,6 +162,18 @@ struct EdgeCollapseCriteria {
 };
 EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& criteria);
 
+/// Mesh upkeep for a quadruple point whose lines run together (mesh/corner_zip.cpp), which
+/// collapse_edges makes when its pass collapses nothing: where edges across films at the
+/// quadruple point q, shorter than min_length, join the first vertices of two (a film's
+/// corner squeezed shut) or three of q's lines, and those cannot collapse one at a time (a
+/// facet beyond would turn over), they all go onto q at once: q keeps its place for two,
+/// and for three moves to their centre, where the lines part. Tried on the films flipped
+/// to Delaunay (equiangulate) when it fails on them as they are (a squeezed corner's
+/// neighbours are often flat caps). The squeeze with the shortest edge whose zip keeps every
+/// junction and turns no facet over; `collapsed` counts the vertices that went.
+/// Materials, time and the bodies' reference and target volumes are kept.
+EdgeCollapseResult zip_squeezed_corner(const Cluster& c, double min_length);
+
 struct VertexRelaxResult {
     std::optional<Cluster> cluster; ///< none when no vertex moved
     int moved = 0;

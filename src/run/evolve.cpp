@@ -281,12 +281,12 @@ class Run {
             if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
             if (e->kind == "vanishing body" && pop(*e)) continue;
             if (e->kind == "collapsing edge" &&
-                (collapse_edges() || transition_junction(true, true) ||
+                (collapse_edges() || flip_edges() || transition_junction(true, true) ||
                  transition_junction(false, true) || remove_valence_three()))
                 continue;
             if (e->kind == "collapsing facet" &&
                 (flip_edges() || (!caps_relaxed && (caps_relaxed = relax_caps())) ||
-                 collapse_needles()))
+                 collapse_needles() || transition_junction(false, true)))
                 continue;
             break;
         }

@@ -131,8 +131,9 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
     for (Junction& j : junctions(c, films, original_body)) {
         const bool flat = films && j.width < kThinFilm * limit; // due shrinking or not
         if (!(j.size < (films ? j.sides() : 1) * limit) && !flat) continue;
-        if (made_[films].count(j.cells)) continue; // a product of this look's transitions
-        if (protected_product(j, films)) continue;
+        // a product of this look's or an earlier transition, unless forced (an edge is
+        // collapsing: the run stops if nothing clears it)
+        if (!force && (made_[films].count(j.cells) || protected_product(j, films))) continue;
         const auto was = memory.find(j.cells);
         if (force || flat || (was != memory.end() && j.size < was->second))
             out.push_back(std::move(j));
@@ -179,7 +180,8 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
                                                     : junctions(c, true, original_body);
     for (const Junction& j : due(c, films, limit, force, original_body)) {
         const Junction* triangle = films ? nullptr : triangle_beside(c, j.id, small_films);
-        if (triangle && protected_product(*triangle, true)) continue; // its side relaxes with it
+        // its side relaxes with it, unless forced
+        if (triangle && !force && protected_product(*triangle, true)) continue;
         // the triangle's inverse T1 first; should the mesh refuse it, the line's own T1 (the
         // two-sided film it leaves collapses in a later look)
         if (triangle)

@@ -424,14 +424,12 @@ end
 -- (six inner films, each with its two lines from q bent at their midpoints), and line 2's first
 -- vertex turned towards line 1's, so that the edge across film 1|2 between them is shorter
 -- than the limit. That edge cannot collapse (it would join two lines); the lines' first edges can.
-do
-  local v = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}
-  local P = {v[1], v[2], v[3], v[4], {0, 0, 0}}
-  -- the lines bend a little at their midpoints (so no facet lies along a line)
-  local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
-  for i = 1, 4 do
-    P[5 + i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
-  end
+local corners = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}
+-- The four cells around q = vertex 5 at the origin, the corners 1..4, and line i from q to
+-- corner i through its first vertex first[i] (vertex 5 + i).
+local function four_cells(first)
+  local P = {corners[1], corners[2], corners[3], corners[4], {0, 0, 0}}
+  for i = 1, 4 do P[5 + i] = first[i] end
   local q, m = 5, function(i) return 5 + i end
   local surfaces, film = {}, {}
   for i = 1, 4 do for j = i + 1, 4 do
@@ -439,16 +437,27 @@ do
     film[i .. j] = #surfaces
   end end
   local bodies = {}
-  for k = 1, 4 do -- the cell opposite vertex k: the outer face of the other three
+  for k = 1, 4 do -- the cell opposite corner k: the outer face of the other three
     local o = {}
     for i = 1, 4 do if i ~= k then o[#o + 1] = i end end
     surfaces[#surfaces + 1] = {{o[1], o[2], o[3]}}
     bodies[k] = {#surfaces, film[o[1] .. o[2]], film[o[1] .. o[3]], film[o[2] .. o[3]]}
   end
-  local c = froth.cluster{vertices = P, surfaces = surfaces, bodies = bodies}
+  return froth.cluster{vertices = P, surfaces = surfaces, bodies = bodies}
+end
+do
+  local v = corners
+  -- the lines bend a little at their midpoints (so no facet lies along a line)
+  local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
+  local first = {}
+  for i = 1, 4 do
+    first[i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
+  end
+  local c = four_cells(first)
+  local m = function(i) return 5 + i end
   -- squeeze film 1|2's corner at the centre: line 2's first vertex turned towards line 1's at
   -- its distance from the centre, the edge between them now 0.083 against 0.6-0.9 for the rest
-  local a, b = P[m(1)], P[m(2)]
+  local a, b = first[1], first[2]
   local ra, rb = math.sqrt(a[1]^2 + a[2]^2 + a[3]^2), math.sqrt(b[1]^2 + b[2]^2 + b[3]^2)
   local u = {a[1] / ra, a[2] / ra, a[3] / ra}
   local w = {b[1] - rb * u[1], b[2] - rb * u[2], b[3] - rb * u[3]} -- b's part across u
@@ -464,6 +473,37 @@ do
   T.assert_equal(r.vertices, 8, "one vertex less")
   T.assert_equal(#c:quadruple_points(), quads, "every quadruple point stays")
   T.assert_equal(#c:triple_lines(), lines, "and every line")
+  local shortest = math.huge
+  for _, e in ipairs(c:edges()) do shortest = math.min(shortest, e.length) end
+  T.assert_true(shortest > 0.5, "no short edge is left", tostring(shortest))
+end
+
+-- 5d. Three lines running together from q (grain networks: a quadruple point flattened at the
+-- mesh's scale): lines 1..3's first vertices 0.02 from (0.6, 0, 0), 120 degrees apart around
+-- the x axis. No first edge collapses alone (a facet between the others would turn over), so
+-- the three go onto q at once and q moves to their centre (0.6, 0, 0), where the lines part.
+do
+  local first = {}
+  for i = 1, 3 do
+    local t = 2 * math.pi * (i - 1) / 3
+    first[i] = {0.6, 0.02 * math.cos(t), 0.02 * math.sin(t)}
+  end
+  first[4] = {-0.45, -0.55, 0.45}
+  local c = four_cells(first)
+  local quads, lines = #c:quadruple_points(), #c:triple_lines()
+  local r = c:collapse_edges{shorter_than = 0.05}
+  T.assert_equal(r.collapsed, 3, "the three first vertices go at once")
+  T.assert_equal(r.vertices, 6, "three vertices less")
+  T.assert_equal(#c:quadruple_points(), quads, "every quadruple point stays")
+  T.assert_equal(#c:triple_lines(), lines, "and every line")
+  local moved
+  for _, v in ipairs(c:quadruple_points()) do
+    local x = c:vertex(v)
+    if math.abs(x[1]) < 0.9 then moved = x end
+  end
+  T.assert_near(moved[1], 0.6, 1e-14, "q is at the centre of the three")
+  T.assert_near(math.abs(moved[2]) + math.abs(moved[3]), 0, 1e-14, "on the x axis")
+  T.assert_true(c:report().mesh.min_angle > 5, "no sliver is left", tostring(c:report().mesh.min_angle))
   local shortest = math.huge
   for _, e in ipairs(c:edges()) do shortest = math.min(shortest, e.length) end
   T.assert_true(shortest > 0.5, "no short edge is left", tostring(shortest))
