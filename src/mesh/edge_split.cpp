@@ -11,15 +11,22 @@
 #include "mesh/transition_surgery.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
 namespace froth {
 
-EdgeSplitResult split_long_edges(const Cluster& c, double max_length) {
+namespace {
+
+using EdgeKey = std::pair<int, int>;
+
+/// The splits of the edges for which split(a, b, length) is true (a < b), longest first.
+EdgeSplitResult split_edges_where(const Cluster& c,
+                                  const std::function<bool(int, int, double)>& split_it) {
     EdgeSplitResult r;
-    // the edges longer than max_length, longest first, with the facets at each
-    std::map<std::pair<int, int>, std::pair<double, std::vector<std::array<int, 2>>>> edges;
+    // the edges to split, with their lengths and the facets at each
+    std::map<EdgeKey, std::pair<double, std::vector<std::array<int, 2>>>> edges;
     for (int si = 0; si < c.n_surfaces(); ++si) {
         const Surface& s = c.surface(si);
         for (int f = 0; f < static_cast<int>(s.triangles.size()); ++f) {
@@ -27,7 +34,8 @@ EdgeSplitResult split_long_edges(const Cluster& c, double max_length) {
             for (int k = 0; k < 3; ++k) {
                 const double l = (x[(k + 1) % 3] - x[k]).norm();
                 const auto key = std::minmax(s.triangles[f][k], s.triangles[f][(k + 1) % 3]);
-                if (l > max_length) edges[key].first = l, edges[key].second.push_back({si, f});
+                if (split_it(key.first, key.second, l))
+                    edges[key].first = l, edges[key].second.push_back({si, f});
             }
         }
     }
@@ -88,6 +96,42 @@ EdgeSplitResult split_long_edges(const Cluster& c, double max_length) {
     r.cluster.emplace(surgery::rebuild(std::move(spec), "split_long_edges", "the splits"));
     carry_over(c, *r.cluster);
     return r;
+}
+
+} // namespace
+
+EdgeSplitResult split_long_edges(const Cluster& c, double max_length) {
+    return split_edges_where(c, [&](int, int, double l) { return l > max_length; });
+}
+
+std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line) {
+    const TripleLine& tl = c.triple_lines().at(line);
+    const std::set<int> on_line(tl.vertices.begin(), tl.vertices.end());
+    const auto corners_on_line = [&](const Tri& t) {
+        return std::count_if(t.begin(), t.end(), [&](int v) { return on_line.count(v) > 0; });
+    };
+    std::set<EdgeKey> sides; // the other edges of the films the T1 would empty
+    for (int si : tl.surfaces) {
+        const auto& tris = c.surface(si).triangles;
+        if (!std::all_of(tris.begin(), tris.end(), [&](const Tri& t) { return corners_on_line(t) >= 2; }))
+            continue;
+        for (const Tri& t : tris)
+            for (int k = 0; k < 3; ++k)
+                if (!on_line.count(t[k]) || !on_line.count(t[(k + 1) % 3]))
+                    sides.insert(std::minmax(t[k], t[(k + 1) % 3]));
+    }
+    if (sides.empty()) return std::nullopt;
+    // one pass splits an edge per facet: a facet's two sides take two
+    std::optional<Cluster> out;
+    for (int pass = 0; pass < 2; ++pass) {
+        const Cluster& from = out ? *out : c;
+        EdgeSplitResult r = split_edges_where(from, [&](int a, int b, double) {
+            return sides.count({a, b}) > 0;
+        });
+        if (!r.cluster) break;
+        out = std::move(r.cluster);
+    }
+    return out;
 }
 
 } // namespace froth

@@ -39,9 +39,11 @@ struct LineEnd {
 
 class T1 {
   public:
-    T1(const Cluster& c, int line, double min_side, double smallest_side)
-        : c_(c), line_(line), min_side_(min_side), smallest_side_(smallest_side),
-          name_(line_name(line)),
+    /// shown: the line's id in the messages and the record (its id before splits that
+    /// renumbered the lines), line if negative
+    T1(const Cluster& c, int line, double min_side, double smallest_side, int shown = -1)
+        : c_(c), line_(line), shown_(shown >= 0 ? shown : line), min_side_(min_side),
+          smallest_side_(smallest_side), name_(line_name(shown_)),
           cells_(surface_cells(c)) {}
 
     Cluster run(TransitionRecord* record);
@@ -61,7 +63,7 @@ class T1 {
     std::vector<surgery::MovedFacet> moved_; // the facets that took a new corner
 
     const Cluster& c_;
-    const int line_;
+    const int line_, shown_;
     const double min_side_, smallest_side_;
     const std::string name_;
     const std::vector<std::array<int, 2>> cells_; // the bodies on each surface's sides
@@ -278,12 +280,12 @@ Cluster T1::run(TransitionRecord* record) {
         };
         const Vec3 mid = 0.5 * (u_[seg_.front()] + u_[seg_.back()]);
         record->kind = "T1";
-        record->line = line_;
+        record->line = shown_;
         record->cells = {a_.cell, b_.cell};
         record->point = mid;
         record->removed_vertices = static_cast<int>(seg_.size());
         record->removed_facets = c_.n_facets() + 7 - r.n_facets(); // a gap facet per fan, the film
-        record->where = "triple line " + std::to_string(line_ + 1) + " (length " + fmt(length_) +
+        record->where = "triple line " + std::to_string(shown_ + 1) + " (length " + fmt(length_) +
                         ", vertices " + std::to_string(seg_.front() + 1) + " .. " +
                         std::to_string(seg_.back() + 1) + ") became a film of side " +
                         fmt(side_) + " between " +
@@ -300,7 +302,19 @@ Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, do
     if (line < 0 || line >= static_cast<int>(c.triple_lines().size()))
         throw InvalidInput("t1: triple line " + std::to_string(line + 1) + " does not exist (the "
                            "cluster has " + std::to_string(c.triple_lines().size()) + ")");
-    return T1(c, line, min_side, smallest_side).run(record);
+    // a triangular film of one facet beside the line would be left without a facet: its
+    // other sides are split first, and it becomes a lens of two facets
+    std::optional<Cluster> split = split_films_emptied_by_t1(c, line);
+    if (!split) return T1(c, line, min_side, smallest_side).run(record);
+    const std::vector<int>& vertices = c.triple_lines()[line].vertices; // ids the splits keep
+    const auto& lines = split->triple_lines();
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+        const std::vector<int>& w = lines[l].vertices;
+        if (w != vertices && !std::equal(vertices.rbegin(), vertices.rend(), w.begin(), w.end()))
+            continue;
+        return T1(*split, static_cast<int>(l), min_side, smallest_side, line).run(record);
+    }
+    return T1(c, line, min_side, smallest_side).run(record); // not found: it says why not
 }
 
 } // namespace froth

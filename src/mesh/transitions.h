@@ -188,6 +188,12 @@ struct VertexRelaxResult {
 /// change by about the caps' areas times the moves.
 VertexRelaxResult relax_flat_corners(const Cluster& c, double angle);
 
+/// Mesh upkeep for a short edge that cannot collapse: its film vertices (not on a junction)
+/// move as relax_flat_corners moves a cap's corner. A film vertex next to a line vertex whose
+/// collapse breaks the link condition (it is joined to the line's next vertex too) so moves
+/// away from it.
+VertexRelaxResult relax_short_edge_ends(const Cluster& c, double min_length);
+
 struct EdgeSplitResult {
     std::optional<Cluster> cluster; ///< none when nothing was split
     int split = 0;
@@ -198,5 +204,13 @@ struct EdgeSplitResult {
 /// and wires are left. Topology, volumes (the midpoints lie on the straight edges), materials,
 /// time and the reference and target volumes are kept.
 EdgeSplitResult split_long_edges(const Cluster& c, double max_length);
+
+/// Before the T1 of triple line `line`: the films at the line whose every facet has two
+/// corners on it (a triangular film of one facet with the line as a side), which the T1
+/// would leave without a facet, get their other edges split at their midpoints (as
+/// split_long_edges; each such facet's two other sides, in two passes), so that the T1 leaves
+/// them a lens of two facets. None if no film is such. Vertex ids are kept (the midpoints
+/// come after them).
+std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line);
 
 } // namespace froth

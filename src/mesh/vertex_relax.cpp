@@ -38,13 +38,26 @@ std::vector<int> flat_corners(const Cluster& c, const std::vector<int>& rank, do
     return {out.begin(), out.end()};
 }
 
-} // namespace
+/// The film vertices at the ends of edges shorter than min_length.
+std::vector<int> short_edge_ends(const Cluster& c, const std::vector<int>& rank, double min_length) {
+    std::set<int> out;
+    for (const Surface& s : c.surfaces())
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const auto x = s.corners(c.positions(), f);
+            for (int k = 0; k < 3; ++k)
+                if ((x[(k + 1) % 3] - x[k]).norm() < min_length)
+                    for (int v : {s.triangles[f][k], s.triangles[f][(k + 1) % 3]})
+                        if (rank[v] == 0) out.insert(v);
+        }
+    return {out.begin(), out.end()};
+}
 
-VertexRelaxResult relax_flat_corners(const Cluster& c, double angle) {
+/// Each of `vertices` (film vertices) in turn moves in its tangent plane to the mean of its
+/// neighbours unless a facet at it would turn over or flatten; no two moved vertices are
+/// neighbours.
+VertexRelaxResult relax_vertices(const Cluster& c, const std::vector<int>& vertices) {
     VertexRelaxResult r;
-    const std::vector<int> rank = surgery::vertex_ranks(c);
-    const std::vector<int> apexes = flat_corners(c, rank, angle);
-    if (apexes.empty()) return r;
+    if (vertices.empty()) return r;
     // each film vertex's facets: (surface, facet, corner)
     std::vector<std::vector<std::array<int, 3>>> at(c.n_vertices());
     for (int si = 0; si < c.n_surfaces(); ++si) {
@@ -54,7 +67,7 @@ VertexRelaxResult relax_flat_corners(const Cluster& c, double angle) {
     }
     std::vector<Vec3> X = c.positions();
     std::vector<char> touched(c.n_vertices(), 0); // moved, or next to a moved vertex
-    for (int v : apexes) {
+    for (int v : vertices) {
         if (touched[v]) continue;
         // the neighbours' mean and the vertex normal, in v's own frame (facet corners)
         Vec3 mean = Vec3::Zero(), normal = Vec3::Zero();
@@ -66,13 +79,20 @@ VertexRelaxResult relax_flat_corners(const Cluster& c, double angle) {
         mean /= static_cast<double>(at[v].size());
         if (!(normal.norm() > 0)) continue;
         normal.normalize();
-        const Vec3 d = mean - mean.dot(normal) * normal;
-        bool keeps = true;
-        for (const auto& [si, f, k] : at[v]) {
-            const auto x = c.surface(si).corners(c.positions(), f);
-            std::array<Vec3, 3> y = x;
-            y[k] += d;
-            keeps = keeps && surgery::keeps_its_side((x[1] - x[0]).cross(x[2] - x[0]), y);
+        // the whole way, or where a facet would turn over, half or a quarter of it
+        const Vec3 full = mean - mean.dot(normal) * normal;
+        Vec3 d = full;
+        bool keeps = false;
+        for (double part : {1.0, 0.5, 0.25}) {
+            d = part * full;
+            keeps = true;
+            for (const auto& [si, f, k] : at[v]) {
+                const auto x = c.surface(si).corners(c.positions(), f);
+                std::array<Vec3, 3> y = x;
+                y[k] += d;
+                keeps = keeps && surgery::keeps_its_side((x[1] - x[0]).cross(x[2] - x[0]), y);
+            }
+            if (keeps) break;
         }
         if (!keeps) continue;
         X[v] += d;
@@ -84,6 +104,16 @@ VertexRelaxResult relax_flat_corners(const Cluster& c, double angle) {
     r.cluster.emplace(c);
     r.cluster->set_positions(std::move(X));
     return r;
+}
+
+} // namespace
+
+VertexRelaxResult relax_flat_corners(const Cluster& c, double angle) {
+    return relax_vertices(c, flat_corners(c, surgery::vertex_ranks(c), angle));
+}
+
+VertexRelaxResult relax_short_edge_ends(const Cluster& c, double min_length) {
+    return relax_vertices(c, short_edge_ends(c, surgery::vertex_ranks(c), min_length));
 }
 
 } // namespace froth

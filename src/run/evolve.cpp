@@ -281,7 +281,8 @@ class Run {
             if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
             if (e->kind == "vanishing body" && pop(*e)) continue;
             if (e->kind == "collapsing edge" &&
-                (collapse_edges() || flip_edges() || transition_junction(true, true) ||
+                (collapse_edges() || flip_edges() || relax_short_edges() ||
+                 transition_junction(true, true) ||
                  transition_junction(false, true) || remove_valence_three()))
                 continue;
             if (e->kind == "collapsing facet" &&
@@ -378,6 +379,16 @@ class Run {
     bool relax_caps() {
         if (!facet_upkeep_allowed()) return false;
         VertexRelaxResult relaxed = relax_flat_corners(c_, 10 * o_.watch.min_facet_angle);
+        return take_upkeep(relaxed.cluster, relaxed.moved, r_.relaxed_vertices);
+    }
+
+    /// Mesh upkeep for a collapsing edge that neither collapses nor flips away (with
+    /// facet_upkeep_allowed): its film vertices move to their neighbours' mean in their
+    /// tangent planes.
+    bool relax_short_edges() {
+        if (!facet_upkeep_allowed()) return false;
+        const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
+        VertexRelaxResult relaxed = relax_short_edge_ends(c_, limit);
         return take_upkeep(relaxed.cluster, relaxed.moved, r_.relaxed_vertices);
     }
 

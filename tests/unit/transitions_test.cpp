@@ -1,4 +1,5 @@
-// Topological transitions (mesh/transitions.h): the pop of a vanishing cell.
+// Topological transitions (mesh/transitions.h): the pop of a vanishing cell; the splits
+// before a T1 that would empty a film.
 #include "core/errors.h"
 #include "expect_error.h"
 #include "geometry/geometry.h"
@@ -7,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace froth {
@@ -92,6 +95,118 @@ TEST(PopBody, RefusesFixedVertices) {
     s.fixed = {static_cast<int>(s.vertices.size()) - 1}; // a vertex of the inner bubble
     const Cluster c(std::move(s));
     expect_topology_error([&] { pop_body(c, 1); }, {"body 2", "fixed vertex"});
+}
+
+} // namespace
+} // namespace froth
+
+namespace froth {
+namespace {
+
+/// Four cells around a tetrahedron's centre (vertex 4): the inner film between cells i and j
+/// has the facets (4, 5 + i, 5 + j), (5 + i, i, j), (5 + i, j, 5 + j), vertex 5 + i being the
+/// first vertex of the line from the centre to corner i; each cell's outer face is a film
+/// of one facet between three corners, all of them quadruple points (with the outside).
+ClusterSpec four_cells() {
+    ClusterSpec s;
+    s.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}, {0, 0, 0}};
+    const Vec3 bend[4] = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}};
+    for (int i = 0; i < 4; ++i) s.vertices.push_back(0.5 * s.vertices[i] + bend[i]);
+    int film[4][4];
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+            film[i][j] = static_cast<int>(s.surfaces.size());
+            s.surfaces.push_back({{{4, 5 + i, 5 + j}, {5 + i, i, j}, {5 + i, j, 5 + j}}, 1.0});
+        }
+    for (int k = 0; k < 4; ++k) { // the cell opposite corner k
+        std::vector<int> o;
+        for (int i = 0; i < 4; ++i)
+            if (i != k) o.push_back(i);
+        s.surfaces.push_back({{{o[0], o[1], o[2]}}, 1.0});
+        s.bodies.push_back({static_cast<int>(s.surfaces.size()) - 1, film[o[0]][o[1]],
+                            film[o[0]][o[2]], film[o[1]][o[2]]});
+    }
+    return s;
+}
+
+int line_between(const Cluster& c, int a, int b) {
+    for (std::size_t l = 0; l < c.triple_lines().size(); ++l) {
+        const std::vector<int>& v = c.triple_lines()[l].vertices;
+        if (v.size() == 2u && std::min(v[0], v[1]) == std::min(a, b) &&
+            std::max(v[0], v[1]) == std::max(a, b))
+            return static_cast<int>(l);
+    }
+    return -1;
+}
+
+// The line between corners 1 and 2 is a side of the outer faces of the cells opposite corners
+// 0 and 3 (surfaces 6 and 9), films of one facet that its T1 would leave without one: their
+// two other sides are split at their midpoints (each a side of another outer face too, so
+// all four get three facets), nothing else changes (areas and volumes exactly).
+TEST(SplitFilmsEmptiedByT1, SplitsTheOtherSidesOfAOneFacetFilm) {
+    const Cluster c(four_cells());
+    const int line = line_between(c, 1, 2);
+    ASSERT_GE(line, 0);
+    const std::optional<Cluster> r = split_films_emptied_by_t1(c, line);
+    ASSERT_TRUE(r.has_value());
+    EXPECT_EQ(r->n_vertices(), c.n_vertices() + 4); // corners 0-1, 0-2, 3-1, 3-2
+    for (int v = 0; v < c.n_vertices(); ++v) EXPECT_EQ(r->position(v), c.position(v));
+    for (int face = 6; face < 10; ++face) {
+        EXPECT_EQ(c.surface(face).triangles.size(), 1u);
+        EXPECT_EQ(r->surface(face).triangles.size(), 3u);
+    }
+    EXPECT_EQ(r->triple_lines().size(), c.triple_lines().size());
+    EXPECT_EQ(r->quadruple_points(), c.quadruple_points());
+    EXPECT_NEAR(energy(*r), energy(c), 1e-13);
+    const std::vector<double> before = body_volumes(c), after = body_volumes(*r);
+    for (std::size_t b = 0; b < before.size(); ++b) EXPECT_NEAR(after[b], before[b], 1e-14);
+    EXPECT_NE(line_between(*r, 1, 2), -1); // the line itself is not split
+}
+
+// A line from the centre has no such film (the inner films have a facet with one corner on
+// it): nothing to split.
+TEST(SplitFilmsEmptiedByT1, NothingWhereEveryFilmKeepsAFacet) {
+    const Cluster c(four_cells());
+    for (std::size_t l = 0; l < c.triple_lines().size(); ++l)
+        if (c.triple_lines()[l].vertices.size() == 3u)
+            EXPECT_FALSE(split_films_emptied_by_t1(c, static_cast<int>(l)).has_value());
+}
+
+} // namespace
+} // namespace froth
+
+namespace froth {
+namespace {
+
+double shortest_edge(const Cluster& c) {
+    double shortest = INFINITY;
+    for (const Surface& s : c.surfaces())
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const auto x = s.corners(c.positions(), f);
+            for (int k = 0; k < 3; ++k) shortest = std::min(shortest, (x[(k + 1) % 3] - x[k]).norm());
+        }
+    return shortest;
+}
+
+// A film vertex pushed to 1e-3 from a neighbour: relax_short_edge_ends moves it (or the
+// neighbour) in its tangent plane to its neighbours' mean, the edge opens to the mesh's size.
+TEST(RelaxShortEdgeEnds, OpensAShortEdge) {
+    ClusterSpec s = test::icosphere(2, 1.0);
+    s.bodies = {{0}};
+    // the lower id moves (the first of the pass): the one pushed next to the other
+    const Tri t = s.surfaces[0].triangles[0];
+    const int pushed = std::min(t[0], t[1]), other = std::max(t[0], t[1]);
+    const Vec3 a = s.vertices[pushed], b = s.vertices[other];
+    s.vertices[pushed] = b + 1e-3 * (a - b).normalized();
+    const Cluster c(s);
+    EXPECT_NEAR(shortest_edge(c), 1e-3, 1e-12);
+    EXPECT_FALSE(relax_short_edge_ends(c, 1e-4).cluster.has_value()); // none that short
+    const VertexRelaxResult r = relax_short_edge_ends(c, 1e-2);
+    ASSERT_TRUE(r.cluster.has_value());
+    EXPECT_EQ(r.moved, 1); // the two ends are neighbours: one moves
+    EXPECT_EQ(r.cluster->position(other), c.position(other));
+    EXPECT_GT(shortest_edge(*r.cluster), 0.1);
+    EXPECT_NEAR(body_volumes(*r.cluster)[0], body_volumes(c)[0], 1e-3 * body_volumes(c)[0]);
 }
 
 } // namespace
