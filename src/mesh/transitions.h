@@ -174,6 +174,15 @@ EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& 
 /// Materials, time and the bodies' reference and target volumes are kept.
 EdgeCollapseResult zip_squeezed_corner(const Cluster& c, double min_length);
 
+/// Mesh upkeep for films narrower than their mesh (mesh/thin_film_remesh.cpp): every film
+/// whose mean width (2 area / perimeter) is below max_width, whose border is one loop of
+/// junction vertices and which has film vertices inside, gets the triangulation of its border
+/// alone that maximises the smallest angle among those facing the film's way; its inner
+/// vertices go (`collapsed` counts them). Borders, lines and quadruple points stay; the
+/// volumes change by about the film's area times its inner vertices' distance from the new
+/// facets. None if no film is such or the result is not a valid cluster of the same junctions.
+EdgeCollapseResult remesh_thin_films(const Cluster& c, double max_width);
+
 struct VertexRelaxResult {
     std::optional<Cluster> cluster; ///< none when no vertex moved
     int moved = 0;

@@ -281,13 +281,13 @@ class Run {
             if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
             if (e->kind == "vanishing body" && pop(*e)) continue;
             if (e->kind == "collapsing edge" &&
-                (collapse_edges() || flip_edges() || relax_short_edges() ||
+                (collapse_edges() || flip_edges() || remesh_thin() || relax_short_edges() ||
                  transition_junction(true, true) ||
                  transition_junction(false, true) || remove_valence_three()))
                 continue;
             if (e->kind == "collapsing facet" &&
                 (flip_edges() || (!caps_relaxed && (caps_relaxed = relax_caps())) ||
-                 collapse_needles() || transition_junction(false, true)))
+                 collapse_needles() || remesh_thin() || transition_junction(false, true)))
                 continue;
             break;
         }
@@ -380,6 +380,15 @@ class Run {
         if (!facet_upkeep_allowed()) return false;
         VertexRelaxResult relaxed = relax_flat_corners(c_, 10 * o_.watch.min_facet_angle);
         return take_upkeep(relaxed.cluster, relaxed.moved, r_.relaxed_vertices);
+    }
+
+    /// Mesh upkeep for a collapsing edge or facet that neither collapses nor flips away (with
+    /// facet_upkeep_allowed): films narrower than a tenth of the mean edge lose their inner
+    /// vertices (remesh_thin_films).
+    bool remesh_thin() {
+        if (!facet_upkeep_allowed()) return false;
+        EdgeCollapseResult r = remesh_thin_films(c_, 0.1 * mean_edge_length(c_));
+        return take_upkeep(r.cluster, r.collapsed, r_.collapsed_edges);
     }
 
     /// Mesh upkeep for a collapsing edge that neither collapses nor flips away (with

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace froth {
@@ -207,6 +208,43 @@ TEST(RelaxShortEdgeEnds, OpensAShortEdge) {
     EXPECT_EQ(r.cluster->position(other), c.position(other));
     EXPECT_GT(shortest_edge(*r.cluster), 0.1);
     EXPECT_NEAR(body_volumes(*r.cluster)[0], body_volumes(c)[0], 1e-3 * body_volumes(c)[0]);
+}
+
+} // namespace
+} // namespace froth
+
+namespace froth {
+namespace {
+
+// The four cells refined once: every film gets vertices inside. remesh_thin_films with a
+// width above every film's takes them all out and triangulates each film's border alone
+// (n border vertices, n - 2 facets); the lines and quadruple points stay. With a width below
+// every film's nothing changes.
+TEST(RemeshThinFilms, TriangulatesTheBorderAlone) {
+    const Cluster c = refine(Cluster(four_cells()));
+    const std::vector<int> rank = [&] {
+        std::vector<int> on_junction(c.n_vertices(), 0);
+        for (const JunctionEdge& e : c.junction_edges()) on_junction[e.a] = on_junction[e.b] = 1;
+        return on_junction;
+    }();
+    const int junction_vertices = static_cast<int>(std::count(rank.begin(), rank.end(), 1));
+    ASSERT_LT(junction_vertices, c.n_vertices()); // film vertices inside
+    EXPECT_FALSE(remesh_thin_films(c, 1e-6).cluster.has_value());
+    const EdgeCollapseResult r = remesh_thin_films(c, 10.0);
+    ASSERT_TRUE(r.cluster.has_value());
+    const Cluster& d = *r.cluster;
+    EXPECT_EQ(d.n_vertices(), junction_vertices);
+    EXPECT_EQ(r.collapsed, c.n_vertices() - junction_vertices);
+    EXPECT_EQ(d.triple_lines().size(), c.triple_lines().size());
+    EXPECT_EQ(d.quadruple_points().size(), c.quadruple_points().size());
+    for (int si = 0; si < d.n_surfaces(); ++si) {
+        std::set<int> border;
+        for (const Tri& t : d.surface(si).triangles) border.insert(t.begin(), t.end());
+        EXPECT_EQ(d.surface(si).triangles.size(), border.size() - 2) << "surface " << si;
+    }
+    // the cells keep their volumes to within the films' bends
+    const std::vector<double> before = body_volumes(c), after = body_volumes(d);
+    for (std::size_t b = 0; b < before.size(); ++b) EXPECT_NEAR(after[b], before[b], 0.05 * before[b]);
 }
 
 } // namespace
