@@ -22,10 +22,11 @@
 -- Sample runs:  froth datafiles/grain_growth.lua                    (200 grains, T = 0.05)
 --               froth datafiles/grain_growth.lua n=27 seed=2 lloyd=5 T=0.5
 --               FROTH_SMOKE=1 froth datafiles/grain_growth.lua     (ctest: 27 grains, 5 steps)
+--               froth datafiles/grain_growth.lua T=2 save=g.froth  (the last state, for froth.load)
 local script = require("froth.script")
 local measure = require("froth.measure")
 local opts = script.options({n = 200, seed = 1, lloyd = 20, h = 0.4, tau = 2e-3, T = 0.05,
-                             every = 5, output = "out"}, arg)
+                             every = 5, output = "out", save = ""}, arg)
 if opts.smoke then opts.n, opts.seed, opts.lloyd, opts.T = 27, 2, 5, 5 * opts.tau end
 
 local c = froth.foam{n = opts.n, seed = opts.seed, lloyd = opts.lloyd, h = opts.h,
@@ -81,3 +82,7 @@ end
 local path = opts.output .. "/grain_growth.vtu"
 c:write(path)
 print("wrote " .. path)
+if opts.save ~= "" then -- the last state, to load and go on from (froth.load)
+  c:save(opts.save)
+  print("saved " .. opts.save)
+end

@@ -1,5 +1,6 @@
 // Mesh upkeep (transitions.h, split_long_edges): Evolver's `l`, the split of edges that a
-// growing film has stretched, without changing the cluster's topology.
+// growing film has stretched, without changing the cluster's topology; and
+// split_films_emptied_by_t1, the same splits on the sides of a one-facet film beside a T1.
 //
 // An edge (a, b) gets its midpoint m; each facet (a, b, q) at it (two inside a film, three
 // along a triple line) becomes (a, m, q) and (m, b, q) in the same orientation, so the
@@ -113,8 +114,9 @@ std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line) {
     std::set<EdgeKey> sides; // the other edges of the films the T1 would empty
     for (int si : tl.surfaces) {
         const auto& tris = c.surface(si).triangles;
-        if (!std::all_of(tris.begin(), tris.end(), [&](const Tri& t) { return corners_on_line(t) >= 2; }))
-            continue;
+        const bool emptied = std::all_of(tris.begin(), tris.end(),
+                                         [&](const Tri& t) { return corners_on_line(t) >= 2; });
+        if (!emptied) continue;
         for (const Tri& t : tris)
             for (int k = 0; k < 3; ++k)
                 if (!on_line.count(t[k]) || !on_line.count(t[(k + 1) % 3]))

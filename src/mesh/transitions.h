@@ -190,8 +190,9 @@ struct VertexRelaxResult {
 
 /// Mesh upkeep for flat caps: the film vertex at the largest corner of each facet with a
 /// corner below `angle` degrees and one above 90 moves in its tangent plane (the plane normal
-/// to the sum of its facets' area vectors) to the mean of its neighbours, unless a facet at it
-/// would turn over or flatten; in one pass, no two moved vertices neighbours. Inside a film a
+/// to the sum of its facets' area vectors) to the mean of its neighbours, or where a facet at
+/// it would turn over or flatten half or a quarter of the way, else not at all; in one pass,
+/// no two moved vertices neighbours. Inside a film a
 /// flip mends a cap too; where the cap's long side is a triple line nothing else does.
 /// Topology, materials, time and the reference and target volumes are kept; the volumes
 /// change by about the caps' areas times the moves.

@@ -4,7 +4,9 @@
 // (a one-edge line that the flow stretched past the film vertex beside it) nothing can be
 // flipped, and collapsing the vertex may turn its other facets over. Moving the vertex in its
 // tangent plane towards the mean of its neighbours (Evolver's `V` for that vertex alone) opens
-// the cap and keeps the film's shape to second order.
+// the cap and keeps the film's shape to second order. relax_short_edge_ends moves the film
+// vertices of short edges the same way (one beside a line vertex, joined to the line's next
+// vertex too, cannot collapse onto it).
 #include "mesh/transitions.h"
 
 #include "mesh/transition_surgery.h"

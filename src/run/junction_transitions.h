@@ -8,7 +8,9 @@
 /// shrunk below half its size right after it: a product is made larger than the limit where
 /// the mesh lets it be, and relaxes back by shrinking a little, which is not the shrinking of
 /// a junction on its way out (without this rule T1s and inverse T1s alternated at
-/// the same junction step after step in grain networks). Nor may a transition undo what one
+/// the same junction step after step in grain networks); when forced (an edge or facet
+/// collapsing that nothing else mends) products are due as well, since a product made below
+/// the mesh's scale is what collapses. Nor may a transition undo what one
 /// did to the same two cells (a film between them made or removed) in the same look or the few
 /// after, unless forced (an edge collapsing): at a tangle of small junctions a T1 next to an
 /// inverse T1 otherwise restored the film it removed, look after look.
