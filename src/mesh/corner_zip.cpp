@@ -29,7 +29,8 @@ namespace {
 constexpr double kTogether = 15 * M_PI / 180;
 
 /// A quadruple point q and the first vertices of its lines that come together: each
-/// joined to another by a film's edge shorter than min_length across a corner at q.
+/// joined to another by a film's edge shorter than min_length across a corner at q (a side
+/// of q's facet there, or beyond film vertices next to q).
 struct Squeeze {
     double length; // the shortest such edge
     int q;
@@ -41,21 +42,30 @@ std::vector<Squeeze> squeezed_corners(const Cluster& c, double min_length) {
     std::set<std::pair<int, int>> junction;
     for (const JunctionEdge& e : c.junction_edges()) junction.insert(std::minmax(e.a, e.b));
     const auto on_line = [&](int u, int v) { return junction.count(std::minmax(u, v)) > 0; };
+    // the quadruple points a line vertex is next to along its line
+    std::vector<std::vector<int>> point_of(c.n_vertices());
+    for (const JunctionEdge& e : c.junction_edges()) {
+        if (rank[e.a] == 1 && rank[e.b] == 2) point_of[e.a].push_back(e.b);
+        if (rank[e.b] == 1 && rank[e.a] == 2) point_of[e.b].push_back(e.a);
+    }
     std::map<int, Squeeze> at; // by q
     for (int si = 0; si < c.n_surfaces(); ++si) {
         const Surface& s = c.surface(si);
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
             const auto x = s.corners(c.positions(), f);
             for (int k = 0; k < 3; ++k) {
-                const int a = s.triangles[f][k], b = s.triangles[f][(k + 1) % 3],
-                          q = s.triangles[f][(k + 2) % 3];
+                const int a = s.triangles[f][k], b = s.triangles[f][(k + 1) % 3];
                 const double l = (x[(k + 1) % 3] - x[k]).norm();
-                if (!(l < min_length && rank[a] == 1 && rank[b] == 1 && rank[q] == 2 &&
-                      !on_line(a, b) && on_line(a, q) && on_line(b, q)))
+                if (!(l < min_length && rank[a] == 1 && rank[b] == 1 && !on_line(a, b)))
                     continue;
-                Squeeze& z = at.try_emplace(q, Squeeze{l, q, {}}).first->second;
-                z.length = std::min(z.length, l);
-                z.first.insert(a), z.first.insert(b);
+                // the corner's facet (q, a, b), or film vertices between a and b at q
+                for (int q : point_of[a]) {
+                    if (std::find(point_of[b].begin(), point_of[b].end(), q) == point_of[b].end())
+                        continue;
+                    Squeeze& z = at.try_emplace(q, Squeeze{l, q, {}}).first->second;
+                    z.length = std::min(z.length, l);
+                    z.first.insert(a), z.first.insert(b);
+                }
             }
         }
     }
