@@ -42,12 +42,12 @@ std::vector<Squeeze> squeezed_corners(const Cluster& c, double min_length) {
     std::set<std::pair<int, int>> junction;
     for (const JunctionEdge& e : c.junction_edges()) junction.insert(std::minmax(e.a, e.b));
     const auto on_line = [&](int u, int v) { return junction.count(std::minmax(u, v)) > 0; };
-    // the quadruple points a line vertex is next to along its line
-    std::vector<std::vector<int>> point_of(c.n_vertices());
-    for (const JunctionEdge& e : c.junction_edges()) {
-        if (rank[e.a] == 1 && rank[e.b] == 2) point_of[e.a].push_back(e.b);
-        if (rank[e.b] == 1 && rank[e.a] == 2) point_of[e.b].push_back(e.a);
-    }
+    // along the lines: the quadruple points next to a line vertex, and for a quadruple
+    // point the first vertices of its lines (the same edges seen from either end)
+    std::vector<std::vector<int>> point_of(c.n_vertices()), first_of(c.n_vertices());
+    for (const JunctionEdge& e : c.junction_edges())
+        for (const auto& [v, w] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}})
+            if (rank[v] == 1 && rank[w] == 2) point_of[v].push_back(w), first_of[w].push_back(v);
     std::map<int, Squeeze> at; // by q
     for (int si = 0; si < c.n_surfaces(); ++si) {
         const Surface& s = c.surface(si);
@@ -72,11 +72,6 @@ std::vector<Squeeze> squeezed_corners(const Cluster& c, double min_length) {
     // a third line that leaves q within kTogether of a squeezed one runs with them: the
     // three first vertices go together, or the zip of two would turn the facets between
     // them over
-    std::vector<std::vector<int>> first_of(c.n_vertices());
-    for (const JunctionEdge& e : c.junction_edges()) {
-        if (rank[e.a] == 2 && rank[e.b] == 1) first_of[e.a].push_back(e.b);
-        if (rank[e.b] == 2 && rank[e.a] == 1) first_of[e.b].push_back(e.a);
-    }
     const auto towards = [&](int q, int v) {
         return (c.position(v) + c.edge_shift(q, v) - c.position(q)).normalized();
     };

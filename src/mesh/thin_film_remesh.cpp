@@ -48,7 +48,9 @@ Border border_loop(const Cluster& c, int si) {
     do {
         b.vertices.push_back(v);
         b.x.push_back(x);
-        const int w = next.at(v);
+        const auto w_it = next.find(v);
+        if (w_it == next.end()) return {}; // an open border: not a film's
+        const int w = w_it->second;
         x += c.position(w) - c.position(v) + c.edge_shift(v, w);
         v = w;
     } while (v != b.vertices.front() && b.vertices.size() <= next.size());

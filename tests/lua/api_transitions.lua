@@ -425,6 +425,11 @@ end
 -- vertex turned towards line 1's, so that the edge across film 1|2 between them is shorter
 -- than the limit. That edge cannot collapse (it would join two lines); the lines' first edges can.
 local corners = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}
+local function shortest_edge(c)
+  local shortest = math.huge
+  for _, e in ipairs(c:edges()) do shortest = math.min(shortest, e.length) end
+  return shortest
+end
 -- The four cells around q = vertex 5 at the origin, the corners 1..4, and line i from q to
 -- corner i through its first vertex first[i] (vertex 5 + i).
 local function four_cells(first)
@@ -473,9 +478,7 @@ do
   T.assert_equal(r.vertices, 8, "one vertex less")
   T.assert_equal(#c:quadruple_points(), quads, "every quadruple point stays")
   T.assert_equal(#c:triple_lines(), lines, "and every line")
-  local shortest = math.huge
-  for _, e in ipairs(c:edges()) do shortest = math.min(shortest, e.length) end
-  T.assert_true(shortest > 0.5, "no short edge is left", tostring(shortest))
+  T.assert_true(shortest_edge(c) > 0.5, "no short edge is left", tostring(shortest_edge(c)))
 end
 
 -- 5d. Three lines running together from q (grain networks: a quadruple point flattened at the
@@ -504,9 +507,7 @@ do
   T.assert_near(moved[1], 0.6, 1e-14, "q is at the centre of the three")
   T.assert_near(math.abs(moved[2]) + math.abs(moved[3]), 0, 1e-14, "on the x axis")
   T.assert_true(c:report().mesh.min_angle > 5, "no sliver is left", tostring(c:report().mesh.min_angle))
-  local shortest = math.huge
-  for _, e in ipairs(c:edges()) do shortest = math.min(shortest, e.length) end
-  T.assert_true(shortest > 0.5, "no short edge is left", tostring(shortest))
+  T.assert_true(shortest_edge(c) > 0.5, "no short edge is left", tostring(shortest_edge(c)))
 end
 
 -- errors
