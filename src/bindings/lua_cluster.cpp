@@ -453,6 +453,7 @@ int l_evolve(lua_State* L) {
         set_integer(L, "split_edges", r.split_edges);
         set_integer(L, "flipped_edges", r.flipped_edges);
         set_integer(L, "relaxed_vertices", r.relaxed_vertices);
+        set_integer(L, "deferred", r.deferred);
         lua_pushstring(L, r.stop_reason.c_str());
         lua_setfield(L, -2, "stop_reason");
         if (r.event) {

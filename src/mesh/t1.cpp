@@ -59,6 +59,7 @@ class T1 {
     void split_fans(ClusterSpec& spec, const LineEnd& end);
     double mean_edge_at(int v) const;
     std::vector<Vec3> place_film(const ClusterSpec& spec);
+    double film_area(const std::vector<Vec3>& V) const;
 
     std::vector<surgery::MovedFacet> moved_; // the facets that took a new corner
 
@@ -76,6 +77,7 @@ class T1 {
     std::array<Vec3, 3> p_;                // the new corners, in a's frame
     double length_ = 0;
     double side_ = 0;                      // the new film's side
+    bool fitted_ = false;                  // the corners were moved off slivers
     int n_ = 0;                            // c's vertex count: the corners are n_, n_+1, n_+2
 };
 
@@ -182,9 +184,11 @@ void T1::place_corners(double side) {
 
 /// The positions after the T1: c's, then the three corners at the largest side from
 /// first_side() down, halving, to an eighth of the line's length or smallest_side, that turns
-/// no facet over (where the mesh beside the line is finer than the film would be). A side
-/// below the line's length is due for an inverse T1 if it shrinks, but a refused T1 stops the
-/// run at the collapsing line.
+/// no facet over (where the mesh beside the line is finer than the film would be). At each
+/// side the corners are first placed as place_corners says, then, if a facet turns, moved by
+/// surgery::fit_corners (at most the side) off the slivers beside the line, so long as the new
+/// film keeps half its area. A side below the line's length is due for an inverse T1 if it
+/// shrinks, but a refused T1 stops the run at the collapsing line.
 std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
     const double smallest = std::max(0.125 * length_, smallest_side_);
     int turned = -1;
@@ -196,11 +200,21 @@ std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
             side_ = side;
             return V;
         }
+        if (surgery::fit_corners(spec, V, moved_, {n_, n_ + 1, n_ + 2}, side) &&
+            film_area(V) >= 0.5 * std::sqrt(3.0) / 4 * side * side) {
+            side_ = side, fitted_ = true;
+            return V;
+        }
         if (0.5 * side < smallest) break;
     }
     throw TopologyError(name_ + ": the T1 would turn a facet of surface " +
                         std::to_string(turned + 1) + " over (a sliver next to the line); the "
                         "mesh there is too fine across the line for it");
+}
+
+/// The area of the new film at positions V (its corners n_, n_ + 1, n_ + 2 are in one frame).
+double T1::film_area(const std::vector<Vec3>& V) const {
+    return 0.5 * (V[n_ + 1] - V[n_]).cross(V[n_ + 2] - V[n_]).norm();
 }
 
 int T1::corner_of(int film) const {
@@ -280,6 +294,7 @@ Cluster T1::run(TransitionRecord* record) {
         };
         const Vec3 mid = 0.5 * (u_[seg_.front()] + u_[seg_.back()]);
         record->kind = "T1";
+        record->fitted = fitted_;
         record->line = shown_;
         record->cells = {a_.cell, b_.cell};
         record->point = mid;

@@ -88,6 +88,7 @@ class InverseT1 {
     std::map<int, Offset> d_;             // their lattice offsets in that frame
     Vec3 centre_ = Vec3::Zero(), into_d_ = Vec3::Zero();
     double length_ = 0;                   // the new line's
+    bool fitted_ = false;                 // its ends were moved off slivers
     int n_ = 0;                           // c's vertex count: a is n_, b is n_ + 1
     std::vector<surgery::MovedFacet> moved_;
 };
@@ -258,7 +259,9 @@ int InverseT1::corner_towards(int q, int film, int w) const {
 
 /// The positions after the collapse: c's, then a and b on the normal through F's centre,
 /// length_ apart, length_ from the sides' mean length (or min_length) halved while a facet
-/// would turn over, at most ten times and not below smallest_length.
+/// would turn over, at most ten times and not below smallest_length. Where a facet turns, a
+/// and b are first moved off the slivers (surgery::fit_corners, at most the length) so long as
+/// they stay half the length apart.
 std::vector<Vec3> InverseT1::place_line(const ClusterSpec& spec) {
     double mean = 0;
     for (const Side& side : sides_) mean += side.length / n_sides_;
@@ -270,6 +273,11 @@ std::vector<Vec3> InverseT1::place_line(const ClusterSpec& spec) {
         V.push_back(centre_ - 0.5 * length * into_d_);
         if (!surgery::turns_a_facet(spec, V, moved_, &turned)) {
             length_ = length;
+            return V;
+        }
+        if (surgery::fit_corners(spec, V, moved_, {n_, n_ + 1}, length) &&
+            (V[n_] - V[n_ + 1]).norm() >= 0.5 * length) {
+            length_ = length, fitted_ = true;
             return V;
         }
         if (0.5 * length < smallest_length_) break;
@@ -393,6 +401,7 @@ Cluster InverseT1::run(TransitionRecord* record) {
     check_ends(r, used);
     if (record) {
         record->kind = n_sides_ == 3 ? "inverse T1" : "two-sided film";
+        record->fitted = fitted_;
         record->film = film_;
         record->cells = {d_cell_, e_cell_};
         record->point = centre_;

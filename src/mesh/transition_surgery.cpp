@@ -216,24 +216,65 @@ void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset&
     }
 }
 
+namespace {
+
+/// The corners of moved facet m at positions V, in the frame of its corner 0 (offsets added).
+std::array<Vec3, 3> moved_corners(const ClusterSpec& spec, const std::vector<Vec3>& V,
+                                  const MovedFacet& m) {
+    const auto& s = spec.surfaces[m.surface];
+    std::array<Vec3, 3> x;
+    for (int k = 0; k < 3; ++k) {
+        x[k] = V[s.triangles[m.facet][k]];
+        if (!s.offsets.empty()) {
+            const Offset& o = s.offsets[m.facet][k];
+            x[k] += *spec.period * Vec3(o[0], o[1], o[2]);
+        }
+    }
+    return x;
+}
+
+} // namespace
+
 bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
                    const std::vector<MovedFacet>& moved, int* surface) {
-    for (const MovedFacet& m : moved) {
-        const auto& s = spec.surfaces[m.surface];
-        std::array<Vec3, 3> x;
-        for (int k = 0; k < 3; ++k) {
-            x[k] = V[s.triangles[m.facet][k]];
-            if (!s.offsets.empty()) {
-                const Offset& o = s.offsets[m.facet][k];
-                x[k] += *spec.period * Vec3(o[0], o[1], o[2]);
-            }
-        }
-        if (!keeps_its_side(m.area, x)) {
+    for (const MovedFacet& m : moved)
+        if (!keeps_its_side(m.area, moved_corners(spec, V, m))) {
             if (surface) *surface = m.surface;
             return true;
         }
-    }
     return false;
+}
+
+bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vector<MovedFacet>& moved,
+                 const std::vector<int>& movable, double max_shift) {
+    constexpr double kMargin = 0.01; // height over the opposite edge, in the edge's length
+    constexpr int kSweeps = 50;
+    std::map<int, Vec3> start;
+    for (int v : movable) start[v] = V[v];
+    for (int sweep = 0; sweep < kSweeps; ++sweep) {
+        bool moved_any = false;
+        for (const MovedFacet& m : moved) {
+            const Tri& t = spec.surfaces[m.surface].triangles[m.facet];
+            const Vec3 n = m.area.normalized();
+            for (int k = 0; k < 3; ++k) {
+                if (!start.count(t[k])) continue;
+                const std::array<Vec3, 3> x = moved_corners(spec, V, m);
+                const Vec3& y1 = x[(k + 1) % 3];
+                const Vec3& y2 = x[(k + 2) % 3];
+                // n . ((y1 - p) x (y2 - p)) = g . p + n . (y1 x y2): linear in the corner p
+                const Vec3 g = (y1 - y2).cross(n);
+                const double value = g.dot(x[k]) + n.dot(y1.cross(y2));
+                const double wanted = kMargin * (y1 - y2).squaredNorm();
+                if (value >= wanted || g.squaredNorm() == 0) continue;
+                V[t[k]] += (wanted - value) / g.squaredNorm() * g;
+                moved_any = true;
+            }
+        }
+        if (!moved_any) break;
+    }
+    for (const auto& [v, x] : start)
+        if ((V[v] - x).norm() > max_shift) return false;
+    return !turns_a_facet(spec, V, moved);
 }
 
 } // namespace froth::surgery

@@ -88,4 +88,15 @@ void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset&
 bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
                    const std::vector<MovedFacet>& moved, int* surface = nullptr);
 
+/// Moves the vertices `movable` of V (the new corners of a transition) by cyclic projection
+/// onto half-spaces until every moved facet keeps its side with a margin: each corner of a
+/// moved facet that is movable must lie, in the plane of the facet's old area vector, at least
+/// a hundredth of the opposite edge's length beyond that edge (a corner angle of about half a
+/// degree). Each projection is the least move that meets one facet's condition with the
+/// facet's other corners held, so a corner that meets them all from the start stays where it
+/// is. A corner moves at most `max_shift` in all. True if then no moved facet turns
+/// (turns_a_facet); V keeps the moves either way.
+bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vector<MovedFacet>& moved,
+                 const std::vector<int>& movable, double max_shift);
+
 } // namespace froth::surgery

@@ -25,6 +25,10 @@ struct TransitionRecord {
     Vec3 point = Vec3::Zero(); ///< where it collapsed
     int neighbours = 0;  ///< pop, absorb: the cells around it (the outside counts as one)
     int removed_vertices = 0, removed_facets = 0;
+    /// T1, inverse T1, two-sided film: the new corners were moved off slivers
+    /// (surgery::fit_corners), so the new junction may cross a film that no moved facet is
+    /// part of; the caller decides whether to test for crossings
+    bool fitted = false;
 };
 
 /// The bodies on the two sides of each surface (-1: the outside or nothing; a film between a

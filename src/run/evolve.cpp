@@ -87,11 +87,22 @@ WatchOptions watch_options(const EvolveOptions& o) {
     return w;
 }
 
+/// The watch for a mesh defect the upkeep could not mend (Run::defer): a tenth of the
+/// edge and angle limits; bodies are the first watch's.
+WatchOptions hard_watch_options(const EvolveOptions& o) {
+    WatchOptions w = watch_options(o);
+    w.min_volume_fraction = 0;
+    w.min_edge_fraction *= 0.1;
+    w.min_facet_angle *= 0.1;
+    return w;
+}
+
 /// One evolution: the loop of evolve() split into its parts.
 class Run {
   public:
     Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o, TransitionMemory* memory)
-        : c_(c), stepper_(stepper), o_(o), watch_(watch_options(o)), t_start_(c.time()),
+        : c_(c), stepper_(stepper), o_(o), watch_(watch_options(o)),
+          hard_watch_(hard_watch_options(o)), t_start_(c.time()),
           t_end_(c.time() + o.duration), uncrossed_(c.positions()), uncrossed_t_(c.time()),
           memory_(o.transitions ? memory : nullptr) {
         for (int b = 0; b < c.n_bodies(); ++b) original_body_.push_back(b);
@@ -291,6 +302,7 @@ class Run {
                 continue;
             break;
         }
+        if (e && defer(*e)) e.reset();
         if (e && !junctions_.refused().empty()) e->message += "; " + junctions_.refused();
         if (!e && o_.transitions) junctions_.remember(c_, original_body_);
         if (!e) {
@@ -305,6 +317,22 @@ class Run {
             e->t = uncrossed_t_;
         }
         r_.event = std::move(e);
+        return true;
+    }
+
+    /// True if the run goes on past event e: a collapsing edge or facet in a foam
+    /// (facet_upkeep_allowed) that no upkeep mended is left to the next steps while it stays
+    /// above a tenth of the watch's limits (the flow and the next steps' upkeep often open it);
+    /// below that, or at a crossing, e becomes that event.
+    bool defer(TopologyEvent& e) {
+        if (!o_.transitions || !facet_upkeep_allowed() ||
+            (e.kind != "collapsing edge" && e.kind != "collapsing facet"))
+            return false;
+        if (std::optional<TopologyEvent> hard = hard_watch_.check(c_, r_.steps)) {
+            e = std::move(*hard);
+            return false;
+        }
+        ++r_.deferred;
         return true;
     }
 
@@ -504,7 +532,7 @@ class Run {
     Cluster& c_;
     TimeStepper& stepper_;
     const EvolveOptions& o_;
-    const TopologyWatch watch_;
+    const TopologyWatch watch_, hard_watch_;
     const double t_start_, t_end_;
     // adaptive: the next step to try (the first: tau_start, at most tau_max)
     double tau_next_ = o_.tau_max > 0 ? std::min(o_.tau, o_.tau_max) : o_.tau;

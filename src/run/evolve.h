@@ -95,6 +95,8 @@ struct EvolveResult {
     /// (longer than the longest edge at the start), edges flipped (after the splits and at a
     /// "collapsing facet") and flat caps' corners moved (at a "collapsing facet")
     int collapsed_edges = 0, split_edges = 0, flipped_edges = 0, relaxed_vertices = 0;
+    /// Steps that went on past a collapsing edge or facet no upkeep mended (Run::defer)
+    int deferred = 0;
 };
 
 /// What an evolve with transitions leaves for the next call on the same cluster, so that calls

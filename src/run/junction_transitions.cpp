@@ -1,6 +1,7 @@
 // Which junctions are due for a T1 or an inverse T1, and making one (junction_transitions.h).
 #include "run/junction_transitions.h"
 
+#include "checks/self_intersection.h"
 #include "core/errors.h"
 #include "geometry/geometry.h"
 #include "mesh/transitions.h"
@@ -218,6 +219,10 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
         Cluster changed = !film                ? t1_line_to_film(c, id, &record, 2 * limit)
                           : acted.sides() == 3 ? t1_film_to_line(c, id, &record, 2 * limit)
                                                : collapse_two_sided_film(c, id, &record);
+        // corners moved off slivers may have been moved through another film
+        if (record.fitted && !find_self_intersections(changed, 1).empty())
+            throw TopologyError("its new corners, moved off the slivers beside it, would cross "
+                                "a film");
         event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),
                                 energy(changed)};
         (film ? event.film : event.line) = id;

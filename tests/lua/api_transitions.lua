@@ -510,6 +510,47 @@ do
   T.assert_true(shortest_edge(c) > 0.5, "no short edge is left", tostring(shortest_edge(c)))
 end
 
+-- 5e. A sliver no upkeep can mend (its corners fixed) at a quadruple point: evolve with
+-- transitions leaves it to later steps while it stays above a tenth of the watch's limits
+-- (deferred), and stops at once below that. Film 1|2's corner at q squeezed to about 0.2
+-- (0.02) degrees, as in 5c, its three corners held.
+local function squeezed_corner(sine)
+  local v = corners
+  local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
+  local first = {}
+  for i = 1, 4 do
+    first[i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
+  end
+  local a, b = first[1], first[2]
+  local ra, rb = math.sqrt(a[1]^2 + a[2]^2 + a[3]^2), math.sqrt(b[1]^2 + b[2]^2 + b[3]^2)
+  local u = {a[1] / ra, a[2] / ra, a[3] / ra}
+  local w = {b[1] - rb * u[1], b[2] - rb * u[2], b[3] - rb * u[3]}
+  local wn = math.sqrt(w[1]^2 + w[2]^2 + w[3]^2)
+  local cs = math.sqrt(1 - sine * sine)
+  first[2] = {rb * (cs * u[1] + sine * w[1] / wn), rb * (cs * u[2] + sine * w[2] / wn),
+              rb * (cs * u[3] + sine * w[3] / wn)}
+  first[1] = {ra * u[1], ra * u[2], ra * u[3]}
+  local c = four_cells(first)
+  c:fix({5, 6, 7})
+  return c
+end
+do
+  local c = squeezed_corner(math.sin(math.rad(0.2)))
+  local angle = c:report().mesh.min_angle
+  T.assert_true(angle > 0.05 and angle < 0.5, "a sliver between a tenth of the limit and it", tostring(angle))
+  local r = c:evolve{flow = "mcf", tau = 1e-3, steps = 3, progress = false}
+  T.assert_equal(r.stop_reason, "steps done", "the run goes on past the sliver")
+  T.assert_equal(r.deferred, 3, "left to the next step three times")
+  T.assert_true(c:report().mesh.min_angle < 0.5, "the sliver is still there", tostring(c:report().mesh.min_angle))
+  local stopped = c:evolve{flow = "mcf", tau = 1e-3, steps = 3, progress = false, transitions = false}
+  T.assert_equal(stopped.steps, 1, "without transitions the watch stops the run")
+  T.assert_equal(stopped.deferred, 0, "and leaves nothing to later steps")
+  local thin = squeezed_corner(math.sin(math.rad(0.02)))
+  local r2 = thin:evolve{flow = "mcf", tau = 1e-3, steps = 3, progress = false}
+  T.assert_equal(r2.steps, 1, "below a tenth of the limits the run stops")
+  T.assert_true(r2.stop_reason:find("is collapsing", 1, true) ~= nil, "on the collapsing edge or facet", r2.stop_reason)
+end
+
 -- errors
 local db = froth.double_bubble{h = 0.3}
 T.check_error("t1: triple line 1 is a closed loop", db.t1, db, 1)

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "expect_error.h"
 #include "geometry/geometry.h"
+#include "mesh/transition_surgery.h"
 #include "mesh/transitions.h"
 #include "test_meshes.h"
 
@@ -245,6 +246,55 @@ TEST(RemeshThinFilms, TriangulatesTheBorderAlone) {
     // the cells keep their volumes to within the films' bends
     const std::vector<double> before = body_volumes(c), after = body_volumes(d);
     for (std::size_t b = 0; b < before.size(); ++b) EXPECT_NEAR(after[b], before[b], 0.05 * before[b]);
+}
+
+} // namespace
+} // namespace froth
+
+namespace froth {
+namespace {
+
+/// A fan of four facets in the plane z = 0 around the vertex 4 (moved to p), their far
+/// corners the square's corners (+-1, 0), (0, +-1); the facets' old area vectors face +z.
+struct Fan {
+    ClusterSpec spec;
+    std::vector<surgery::MovedFacet> moved;
+    std::vector<Vec3> V;
+};
+
+Fan square_fan(const Vec3& p) {
+    Fan f;
+    f.V = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, p};
+    ClusterSpec::Surface s;
+    for (int k = 0; k < 4; ++k) s.triangles.push_back({4, k, (k + 1) % 4});
+    f.spec.surfaces.push_back(s);
+    for (int k = 0; k < 4; ++k) f.moved.push_back({0, k, Vec3(0, 0, 1)});
+    return f;
+}
+
+// A corner outside the square's kernel turns facets; fit_corners brings it back inside with
+// a hundredth of each edge's length to spare, and no facet turns.
+TEST(FitCorners, MovesACornerOffTheSlivers) {
+    Fan f = square_fan({0.9, 0.9, 0.2});
+    ASSERT_TRUE(surgery::turns_a_facet(f.spec, f.V, f.moved));
+    ASSERT_TRUE(surgery::fit_corners(f.spec, f.V, f.moved, {4}, 2.0));
+    EXPECT_FALSE(surgery::turns_a_facet(f.spec, f.V, f.moved));
+    // its distance to the nearest side of the square (|x| + |y| = 1) is at least a hundredth
+    // of that side's length, sqrt(2)
+    const Vec3 p = f.V[4];
+    const double to_side = (1 - std::abs(p.x()) - std::abs(p.y())) / std::sqrt(2.0);
+    EXPECT_GE(to_side, 0.01 * std::sqrt(2.0) - 1e-12);
+    EXPECT_NEAR(p.z(), 0.2, 1e-12); // moves stay in the facets' planes
+}
+
+// A corner that already keeps every facet stays where it is; one that would need to move
+// further than max_shift is refused.
+TEST(FitCorners, KeepsAGoodCornerAndRefusesAFarOne) {
+    Fan good = square_fan({0.1, -0.2, 0});
+    ASSERT_TRUE(surgery::fit_corners(good.spec, good.V, good.moved, {4}, 0.0));
+    EXPECT_EQ(good.V[4], Vec3(0.1, -0.2, 0));
+    Fan far = square_fan({3, 3, 0});
+    EXPECT_FALSE(surgery::fit_corners(far.spec, far.V, far.moved, {4}, 1.0));
 }
 
 } // namespace
