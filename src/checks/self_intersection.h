@@ -18,8 +18,16 @@ struct FacetCrossing {
     FacetRef a, b;
 };
 
-/// Up to max_pairs crossing facet pairs (empty: none).
-std::vector<FacetCrossing> find_self_intersections(const Cluster& c, int max_pairs = 1);
+/// A ball: only the facets with a corner in it are tested (in a periodic cluster the distance
+/// to the nearest image of the centre counts).
+struct Region {
+    Vec3 centre;
+    double radius;
+};
+
+/// Up to max_pairs crossing facet pairs (empty: none); with `region`, among its facets only.
+std::vector<FacetCrossing> find_self_intersections(const Cluster& c, int max_pairs = 1,
+                                                   const Region* region = nullptr);
 
 /// False when froth was built without CGAL (then find_self_intersections finds nothing).
 bool self_intersection_available();

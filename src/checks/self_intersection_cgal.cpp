@@ -6,6 +6,8 @@
 #include <CGAL/intersections.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace froth {
 namespace {
@@ -27,9 +29,23 @@ bool share_a_vertex(const Tri& p, const Tri& q) {
     return false;
 }
 
+/// True if a corner of x lies in the region (through the period's nearest image).
+bool in_region(const Cluster& c, const std::array<Vec3, 3>& x, const Region& r) {
+    for (const Vec3& p : x) {
+        Vec3 d = p - r.centre;
+        if (c.periodic()) {
+            const Vec3 k = c.period().inverse() * d;
+            d -= c.period() * Vec3(std::round(k.x()), std::round(k.y()), std::round(k.z()));
+        }
+        if (d.norm() <= r.radius) return true;
+    }
+    return false;
+}
+
 } // namespace
 
-std::vector<FacetCrossing> find_self_intersections(const Cluster& c, int max_pairs) {
+std::vector<FacetCrossing> find_self_intersections(const Cluster& c, int max_pairs,
+                                                   const Region* region) {
     const auto& X = c.positions();
     std::vector<SoupFacet> soup;
     soup.reserve(c.n_facets());
@@ -39,6 +55,7 @@ std::vector<FacetCrossing> find_self_intersections(const Cluster& c, int max_pai
             // Each facet where its corners put it: in a periodic cluster only facets that meet
             // in the same copy of the box are found (a crossing through the box's faces is not).
             const auto x = c.surface(i).corners(X, f);
+            if (region && !in_region(c, x, *region)) continue;
             auto point = [&](int a) { return Point(x[a][0], x[a][1], x[a][2]); };
             soup.push_back({{i, f}, tris[f], Triangle(point(0), point(1), point(2))});
         }

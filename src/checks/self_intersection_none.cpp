@@ -3,7 +3,9 @@
 
 namespace froth {
 
-std::vector<FacetCrossing> find_self_intersections(const Cluster&, int) { return {}; }
+std::vector<FacetCrossing> find_self_intersections(const Cluster&, int, const Region*) {
+    return {};
+}
 
 bool self_intersection_available() { return false; }
 

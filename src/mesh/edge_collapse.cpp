@@ -56,20 +56,24 @@ class Collapser {
     std::vector<int> facets_left_;                            // per surface, after the drops
 };
 
-/// The index k of the shortest side (corners k, k + 1) of the triangle x if one of its corners
-/// is below `angle` degrees, else -1: a needle's short side, or for a flat cap the side from
-/// its flat corner to the nearer end of its long side (the flips' business inside a film, but
-/// not where the long side is a triple line).
-int thin_facet_side(const std::array<Vec3, 3>& x, double angle) {
-    std::array<double, 3> l;
-    for (int k = 0; k < 3; ++k) l[k] = (x[(k + 1) % 3] - x[k]).norm();
-    double smallest = 180;
+/// The sides k (corners k, k + 1) of the triangle x to collapse if one of its corners is below
+/// `angle` degrees (none else): a needle's shortest side; for a flat cap (two corners below
+/// `angle`) both sides from its flat corner, the shorter first (the flips' business inside a
+/// film, but not where the long side is a triple line; the shorter side may join two lines,
+/// which no collapse may, while the other runs along a line to a quadruple point).
+std::vector<int> thin_facet_sides(const std::array<Vec3, 3>& x, double angle) {
+    std::array<double, 3> l, a;
     for (int k = 0; k < 3; ++k) {
+        l[k] = (x[(k + 1) % 3] - x[k]).norm();
         const Vec3 u = x[(k + 1) % 3] - x[k], w = x[(k + 2) % 3] - x[k];
-        smallest = std::min(smallest, std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI);
+        a[k] = std::atan2(u.cross(w).norm(), u.dot(w)) * 180.0 / M_PI;
     }
-    if (!(smallest < angle)) return -1;
-    return static_cast<int>(std::min_element(l.begin(), l.end()) - l.begin());
+    const int thin = std::count_if(a.begin(), a.end(), [&](double d) { return d < angle; });
+    if (thin == 0) return {};
+    std::array<int, 3> by_length{0, 1, 2};
+    std::sort(by_length.begin(), by_length.end(), [&](int i, int j) { return l[i] < l[j]; });
+    if (thin == 1) return {by_length[0]};
+    return {by_length[0], by_length[1]};
 }
 
 std::vector<Candidate> Collapser::candidates() const {
@@ -78,11 +82,12 @@ std::vector<Candidate> Collapser::candidates() const {
         const Surface& s = c_.surface(si);
         for (std::size_t f = 0; f < s.triangles.size(); ++f) {
             const auto x = s.corners(c_.positions(), f);
-            const int needle =
-                criteria_.needle_angle > 0 ? thin_facet_side(x, criteria_.needle_angle) : -1;
+            const std::vector<int> thin = criteria_.needle_angle > 0
+                                              ? thin_facet_sides(x, criteria_.needle_angle)
+                                              : std::vector<int>{};
             for (int k = 0; k < 3; ++k) {
                 const double l = (x[(k + 1) % 3] - x[k]).norm();
-                if (l < criteria_.min_length || k == needle)
+                if (l < criteria_.min_length || std::find(thin.begin(), thin.end(), k) != thin.end())
                     length[std::minmax(s.triangles[f][k], s.triangles[f][(k + 1) % 3])] = l;
             }
         }

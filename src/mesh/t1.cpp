@@ -295,6 +295,7 @@ Cluster T1::run(TransitionRecord* record) {
         const Vec3 mid = 0.5 * (u_[seg_.front()] + u_[seg_.back()]);
         record->kind = "T1";
         record->fitted = fitted_;
+        record->size = side_;
         record->line = shown_;
         record->cells = {a_.cell, b_.cell};
         record->point = mid;

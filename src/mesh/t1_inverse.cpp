@@ -402,6 +402,7 @@ Cluster InverseT1::run(TransitionRecord* record) {
     if (record) {
         record->kind = n_sides_ == 3 ? "inverse T1" : "two-sided film";
         record->fitted = fitted_;
+        record->size = length_;
         record->film = film_;
         record->cells = {d_cell_, e_cell_};
         record->point = centre_;

@@ -23,6 +23,7 @@ struct TransitionRecord {
     /// (-1: outside); absorb: the body and the one that absorbed it
     std::array<int, 2> cells{-1, -1};
     Vec3 point = Vec3::Zero(); ///< where it collapsed
+    double size = 0;     ///< T1: the new film's side; inverse T1, two-sided film: the new line's length
     int neighbours = 0;  ///< pop, absorb: the cells around it (the outside counts as one)
     int removed_vertices = 0, removed_facets = 0;
     /// T1, inverse T1, two-sided film: the new corners were moved off slivers

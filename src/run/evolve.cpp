@@ -283,6 +283,10 @@ class Run {
         // the caps' moves once a step: moved again, a cap next to a line can stay a cap, and
         // the needles' collapse after them must get its turn
         bool caps_relaxed = false;
+        // the same defect seen again after upkeep elsewhere: the upkeeps act on the whole
+        // cluster, so in a large network one of them always finds something to do
+        std::string last_seen;
+        int seen_again = 0;
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
             if (o_.transitions && made < kMaxTransitionsPerStep &&
@@ -290,6 +294,9 @@ class Run {
                 continue;
             e = watch_.check(c_, r_.steps);
             if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
+            seen_again = e->message == last_seen ? seen_again + 1 : 0;
+            if (seen_again >= kLooksAtOneDefect) break;
+            last_seen = e->message;
             if (e->kind == "vanishing body" && pop(*e)) continue;
             if (e->kind == "collapsing edge" &&
                 (collapse_edges() || flip_edges() || remesh_thin() || relax_short_edges() ||
@@ -548,6 +555,8 @@ class Run {
     double longest_edge_ = edge_lengths(c_).longest; // the mesh size the upkeep keeps
     bool made_before_ = false; // a call before this one made a transition
     static constexpr int kMaxTransitionsPerStep = 64;
+    /// Upkeeps in a row after which a defect that is still the same ends the step's upkeep.
+    static constexpr int kLooksAtOneDefect = 4;
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();

@@ -219,8 +219,10 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
         Cluster changed = !film                ? t1_line_to_film(c, id, &record, 2 * limit)
                           : acted.sides() == 3 ? t1_film_to_line(c, id, &record, 2 * limit)
                                                : collapse_two_sided_film(c, id, &record);
-        // corners moved off slivers may have been moved through another film
-        if (record.fitted && !find_self_intersections(changed, 1).empty())
+        // corners moved off slivers may have been moved through another film: the facets
+        // around the transition, out to a few edges beyond what it moved
+        const Region around{record.point, 4 * record.size + 3 * mean_edge_length(c)};
+        if (record.fitted && !find_self_intersections(changed, 1, &around).empty())
             throw TopologyError("its new corners, moved off the slivers beside it, would cross "
                                 "a film");
         event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),

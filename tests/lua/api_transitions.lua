@@ -510,6 +510,32 @@ do
   T.assert_true(shortest_edge(c) > 0.5, "no short edge is left", tostring(shortest_edge(c)))
 end
 
+-- 5d'. A flat cap whose long side is a one-edge line between two quadruple points (corners 1
+-- and 2 of the outer tetrahedron): line 1's first vertex m lies 0.002 off that side, 0.55 of
+-- the way to corner 2. The cap's near side, m to corner 2, would join two lines and may not
+-- collapse; its other side runs along line 1 to corner 1, and m goes there.
+do
+  local first = {}
+  local v = corners
+  local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
+  for i = 1, 4 do
+    first[i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
+  end
+  local p = {1, -0.1, -0.1}
+  local r = math.sqrt(p[1]^2 + p[2]^2 + p[3]^2)
+  first[1] = {p[1] - 0.002 * p[1] / r, p[2] - 0.002 * p[2] / r, p[3] - 0.002 * p[3] / r}
+  local c = four_cells(first)
+  T.assert_true(c:report().mesh.min_angle < 0.2, "a flat cap", tostring(c:report().mesh.min_angle))
+  local quads, lines = #c:quadruple_points(), #c:triple_lines()
+  local r1 = c:collapse_edges{needles = 5}
+  T.assert_equal(r1.collapsed, 1, "the cap's far side collapses")
+  T.assert_equal(r1.vertices, 8, "m goes")
+  T.assert_equal(#c:quadruple_points(), quads, "every quadruple point stays")
+  T.assert_equal(#c:triple_lines(), lines, "and every line")
+  T.assert_near(c:vertex(1)[1], 1, 1e-15, "corner 1 keeps its place")
+  T.assert_true(c:report().mesh.min_angle > 5, "no cap is left", tostring(c:report().mesh.min_angle))
+end
+
 -- 5e. A sliver no upkeep can mend (its corners fixed) at a quadruple point: evolve with
 -- transitions leaves it to later steps while it stays above a tenth of the watch's limits
 -- (deferred), and stops at once below that. Film 1|2's corner at q squeezed to about 0.2
