@@ -36,7 +36,7 @@ print(("%d grains (seed %d, %d Lloyd steps): %d films, %d triple lines, %d quadr
       :format(info.bodies, opts.seed, opts.lloyd, info.surfaces, #c:triple_lines(),
               #c:quadruple_points(), info.vertices))
 
-local residuals, counts, clean_steps = {}, {}, 0
+local residuals, counts, clean_steps, deferred = {}, {}, 0, 0
 local steps, stop = 0, "T reached"
 local t_end = c:time() + opts.T - 1e-12
 local clock = os.clock()
@@ -48,6 +48,7 @@ while c:time() < t_end do
     counts[e.kind] = (counts[e.kind] or 0) + 1
     print(("  t = %.4f  %s: %s"):format(e.t, e.kind, e.where))
   end
+  deferred = deferred + r.deferred
   if r.stop_reason ~= "steps done" then stop = r.stop_reason; break end
   local upkeep = r.split_edges + r.collapsed_edges + r.flipped_edges
   if #r.events == 0 and upkeep == 0 then
@@ -71,6 +72,7 @@ table.sort(made)
 print(("%d steps to t = %.4f in %.1f s: %s; %d grains left"):format(steps, c:time(), seconds,
       #made > 0 and table.concat(made, ", ") or "no transitions", c:info().bodies))
 print("stop: " .. stop)
+print(("%d steps went on past a sliver the upkeep left (deferred)"):format(deferred))
 table.sort(residuals)
 if #residuals > 0 then
   local function quantile(q) return residuals[math.max(1, math.ceil(q * #residuals))] end

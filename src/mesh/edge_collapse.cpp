@@ -40,7 +40,17 @@ class Collapser {
   private:
     std::vector<Candidate> candidates() const;
     void corner_lines(int a, int b, double length, std::vector<Candidate>& out) const;
+    /// What a collapse changes in spec_: facets that take the kept vertex, facets that go.
+    struct Plan {
+        struct Change {
+            int surface, facet, corner;
+        };
+        std::vector<Change> changes;
+        std::vector<std::array<int, 2>> dropped;
+    };
     bool collapse(const Candidate& e);
+    bool plan(int keep, int gone, const Vec3& target, Plan& out) const;
+    void apply(int keep, int gone, const Vec3& target, const Plan& p);
     bool link_condition(int a, int b) const;
 
     const Cluster& c_;
@@ -138,32 +148,18 @@ bool Collapser::link_condition(int a, int b) const {
     return common == opposite;
 }
 
-bool Collapser::collapse(const Candidate& e) {
-    const int ra = rank_[e.a], rb = rank_[e.b];
-    if (ra < 0 || rb < 0 || touched_[e.a] || touched_[e.b]) return false;
-    const bool along_line = junction_.count({e.a, e.b}) > 0;
-    if (along_line ? (ra == 2 && rb == 2) : (ra > 0 && rb > 0)) return false;
-    if (!link_condition(e.a, e.b)) return false;
-    // keep the vertex of higher rank (or the candidate's); equal ranks meet halfway
-    const int keep = e.keep >= 0 ? e.keep : ra >= rb ? e.a : e.b;
-    const int gone = keep == e.a ? e.b : e.a;
+/// The collapse of `gone` onto `keep`, which moves to `target`: the facets that take keep
+/// and those that go; false if a facet at either end would turn over or flatten.
+bool Collapser::plan(int keep, int gone, const Vec3& target, Plan& out) const {
+    out = {};
     const Vec3 shift = c_.edge_shift(keep, gone); // gone's image next to keep
-    const Offset d = surgery::lattice_offset(c_, X_[gone] + shift, X_[gone]);
-    const Vec3 target = ra == rb && e.keep < 0 ? 0.5 * (X_[keep] + X_[gone] + shift) : X_[keep];
-
-    // the facets at either end after the collapse: none may turn over
-    struct Change {
-        int surface, facet, corner;
-    };
-    std::vector<Change> changes;
-    std::vector<std::array<int, 2>> dropped;
     for (int v : {keep, gone})
         for (const auto& [si, f] : facets_at_[v]) {
             const Tri& t = spec_.surfaces[si].triangles[f];
             const bool both = std::find(t.begin(), t.end(), keep) != t.end() &&
                               std::find(t.begin(), t.end(), gone) != t.end();
             if (both) {
-                if (v == keep) dropped.push_back({si, f});
+                if (v == keep) out.dropped.push_back({si, f});
                 continue;
             }
             const auto x = c_.surface(si).corners(X_, f);
@@ -172,25 +168,57 @@ bool Collapser::collapse(const Candidate& e) {
             std::array<Vec3, 3> y = x;
             y[k] = target + (x[k] - X_[v]) - (v == gone ? shift : Vec3::Zero());
             if (!surgery::keeps_its_side(before, y)) return false;
-            if (v == gone) changes.push_back({si, f, k});
+            if (v == gone) out.changes.push_back({si, f, k});
         }
-    // a film of one facet along the edge would vanish: that is a change of topology
-    for (const auto& [si, f] : dropped)
-        if (facets_left_[si] <= 1) return false;
-    for (const auto& [si, f] : dropped) --facets_left_[si];
-    for (const Change& ch : changes) {
+    return true;
+}
+
+bool Collapser::collapse(const Candidate& e) {
+    const int ra = rank_[e.a], rb = rank_[e.b];
+    if (ra < 0 || rb < 0 || touched_[e.a] || touched_[e.b]) return false;
+    const bool along_line = junction_.count({e.a, e.b}) > 0;
+    if (along_line ? (ra == 2 && rb == 2) : (ra > 0 && rb > 0)) return false;
+    if (!link_condition(e.a, e.b)) return false;
+    // keep the vertex of higher rank (or the candidate's); equal ranks meet halfway, or where
+    // the midpoint would turn a facet over, at either end
+    std::vector<std::pair<int, Vec3>> options; // (keep, its place after)
+    if (e.keep >= 0 || ra != rb) {
+        const int keep = e.keep >= 0 ? e.keep : ra > rb ? e.a : e.b;
+        options.push_back({keep, X_[keep]});
+    } else {
+        options = {{e.a, 0.5 * (X_[e.a] + X_[e.b] + c_.edge_shift(e.a, e.b))},
+                   {e.a, X_[e.a]},
+                   {e.b, X_[e.b]}};
+    }
+    Plan plan_made;
+    for (const auto& [keep, target] : options) {
+        const int gone = keep == e.a ? e.b : e.a;
+        if (!plan(keep, gone, target, plan_made)) continue;
+        // a film of one facet along the edge would vanish: that is a change of topology
+        for (const auto& [si, f] : plan_made.dropped)
+            if (facets_left_[si] <= 1) return false;
+        apply(keep, gone, target, plan_made);
+        return true;
+    }
+    return false;
+}
+
+/// Makes the planned collapse in spec_ and X_, and marks both ends' neighbourhoods touched.
+void Collapser::apply(int keep, int gone, const Vec3& target, const Plan& p) {
+    const Offset d = surgery::lattice_offset(c_, X_[gone] + c_.edge_shift(keep, gone), X_[gone]);
+    for (const auto& [si, f] : p.dropped) --facets_left_[si];
+    for (const Plan::Change& ch : p.changes) {
         spec_.surfaces[ch.surface].triangles[ch.facet][ch.corner] = keep;
         if (!spec_.surfaces[ch.surface].offsets.empty())
             for (int x = 0; x < 3; ++x)
                 spec_.surfaces[ch.surface].offsets[ch.facet][ch.corner][x] -= d[x];
     }
-    removed_facets_.insert(removed_facets_.end(), dropped.begin(), dropped.end());
+    removed_facets_.insert(removed_facets_.end(), p.dropped.begin(), p.dropped.end());
     X_[keep] = target;
     for (int v : {keep, gone}) {
         touched_[v] = 1;
         for (int w : neighbours_[v]) touched_[w] = 1;
     }
-    return true;
 }
 
 int Collapser::pass() {

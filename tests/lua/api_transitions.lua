@@ -361,6 +361,24 @@ T.check_error("collapse_edges: shorter_than must be positive and finite", u.coll
 T.check_error("collapse_edges: needles must be an angle in (0, 60) degrees", u.collapse_edges, u,
               {needles = 90})
 
+-- 5a'. Two film vertices a, b 0.01 apart in a flat film on a wire square. Meeting halfway, or
+-- at a, would turn the thin facet (b, c, d) over (c and d lie just right of b, a further
+-- right); a goes onto b instead, which keeps its place exactly.
+do
+  local c = froth.cluster{
+    vertices = {{-1, -1, 0}, {1, -1, 0}, {1, 3, 0}, {-1, 3, 0},               -- the wire
+                {0, 0, 0}, {0.01, 0, 0}, {0.004, 0.5, 0}, {0.004, 2, 0}},     -- b, a, c, d
+    surfaces = {{{1, 5, 8}, {1, 8, 4}, {8, 3, 4}, {5, 7, 8}, {1, 2, 6}, {1, 6, 5},
+                 {6, 2, 3}, {6, 3, 7}, {7, 3, 8}, {5, 6, 7}}},
+    fixed = {1, 2, 3, 4}}
+  local r = c:collapse_edges{shorter_than = 0.02}
+  T.assert_equal(r.collapsed, 1, "the short edge collapses")
+  T.assert_equal(r.vertices, 7, "a goes")
+  T.assert_equal(c:vertex(5)[1], 0, "b keeps its place")
+  T.assert_equal(c:vertex(5)[2], 0, "b keeps its place (y)")
+  T.assert_near(c:area(), 8, 1e-12, "the flat film keeps its area")
+end
+
 -- 5b. Needles and film vertices of three neighbours (evolve's upkeep at a collapsing facet and
 -- at a collapsing edge no transition could clear): an octahedron with one facet split at its
 -- centroid (vertex 7, three neighbours) and one edge split next to its end (vertex 8, 1/50 of
