@@ -10,6 +10,7 @@
 #include "run/junction_transitions.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cmath>
@@ -280,13 +281,8 @@ class Run {
     bool watch_for_topology() {
         std::optional<TopologyEvent> e;
         junctions_.new_look();
-        // the caps' moves once a step: moved again, a cap next to a line can stay a cap, and
-        // the needles' collapse after them must get its turn
-        bool caps_relaxed = false;
-        // the same defect seen again after upkeep elsewhere: the upkeeps act on the whole
-        // cluster, so in a large network one of them always finds something to do
-        std::string last_seen;
-        int seen_again = 0;
+        caps_relaxed_ = false;
+        UpkeepTurns turns;
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
             if (o_.transitions && made < kMaxTransitionsPerStep &&
@@ -294,20 +290,8 @@ class Run {
                 continue;
             e = watch_.check(c_, r_.steps);
             if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
-            seen_again = e->message == last_seen ? seen_again + 1 : 0;
-            if (seen_again >= kLooksAtOneDefect) break;
-            last_seen = e->message;
             if (e->kind == "vanishing body" && pop(*e)) continue;
-            if (e->kind == "collapsing edge" &&
-                (collapse_edges() || flip_edges() || remesh_thin() || relax_short_edges() ||
-                 transition_junction(true, true) ||
-                 transition_junction(false, true) || remove_valence_three()))
-                continue;
-            if (e->kind == "collapsing facet" &&
-                (flip_edges() || (!caps_relaxed && (caps_relaxed = relax_caps())) ||
-                 collapse_needles() || remesh_thin() || transition_junction(false, true)))
-                continue;
-            break;
+            if (!mend(*e, turns)) break;
         }
         if (e && defer(*e)) e.reset();
         if (e && !junctions_.refused().empty()) e->message += "; " + junctions_.refused();
@@ -326,6 +310,52 @@ class Run {
         r_.event = std::move(e);
         return true;
     }
+
+    using Upkeep = bool (Run::*)();
+    /// Where the upkeeps stand for the defect the watch last named.
+    struct UpkeepTurns {
+        std::string defect; ///< its place: the watch's message up to " is collapsing"
+        std::size_t next = 0;
+        int passes = 0;
+        bool acted_in_pass = false;
+    };
+
+    /// One upkeep for a collapsing edge or facet e: the next in its list that changes the
+    /// mesh; false if none does. The upkeeps act on the whole cluster, so in a network one of
+    /// them may always find something to do elsewhere: while the watch names the same defect,
+    /// they take their turns down the list, which is gone through at most
+    /// kPassesAtOneDefect times (again only if one of them acted).
+    bool mend(const TopologyEvent& e, UpkeepTurns& t) {
+        // the facet's upkeeps come last for an edge too: the watch names a collapsing facet
+        // only when no edge is collapsing
+        static constexpr std::array<Upkeep, 9> for_edge = {
+            &Run::collapse_edges,       &Run::flip_edges,           &Run::remesh_thin,
+            &Run::relax_short_edges,    &Run::force_film_transition, &Run::force_line_transition,
+            &Run::remove_valence_three, &Run::relax_caps_once,       &Run::collapse_needles};
+        static constexpr std::array<Upkeep, 5> for_facet = {
+            &Run::flip_edges, &Run::relax_caps_once, &Run::collapse_needles, &Run::remesh_thin,
+            &Run::force_line_transition};
+        const bool edge = e.kind == "collapsing edge";
+        if (!edge && e.kind != "collapsing facet") return false;
+        const Upkeep* list = edge ? for_edge.data() : for_facet.data();
+        const std::size_t size = edge ? for_edge.size() : for_facet.size();
+        // the defect by its place (the message goes on with sizes that the upkeep changes)
+        const std::string defect = e.message.substr(0, e.message.find(" is collapsing"));
+        if (defect != t.defect) t = UpkeepTurns{defect};
+        for (;;) {
+            if (t.next == size) {
+                if (!t.acted_in_pass || ++t.passes >= kPassesAtOneDefect) return false;
+                t.next = 0, t.acted_in_pass = false;
+            }
+            if ((this->*list[t.next++])()) return t.acted_in_pass = true;
+        }
+    }
+
+    bool force_film_transition() { return transition_junction(true, true); }
+    bool force_line_transition() { return transition_junction(false, true); }
+    /// The caps' moves once a look at the step (watch_for_topology): moved again, a cap next
+    /// to a line can stay a cap, and the needles' collapse after them must get its turn.
+    bool relax_caps_once() { return !caps_relaxed_ && (caps_relaxed_ = relax_caps()); }
 
     /// True if the run goes on past event e: a collapsing edge or facet in a foam
     /// (facet_upkeep_allowed) that no upkeep mended is left to the next steps while it stays
@@ -555,8 +585,9 @@ class Run {
     double longest_edge_ = edge_lengths(c_).longest; // the mesh size the upkeep keeps
     bool made_before_ = false; // a call before this one made a transition
     static constexpr int kMaxTransitionsPerStep = 64;
-    /// Upkeeps in a row after which a defect that is still the same ends the step's upkeep.
-    static constexpr int kLooksAtOneDefect = 4;
+    /// Times the upkeeps are gone through for one defect that none of them mends.
+    static constexpr int kPassesAtOneDefect = 2;
+    bool caps_relaxed_ = false; // relax_caps_once made its move in this step's look
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();
