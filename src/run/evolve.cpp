@@ -332,8 +332,11 @@ class Run {
             &Run::collapse_edges,       &Run::flip_edges,           &Run::remesh_thin,
             &Run::relax_short_edges,    &Run::force_film_transition, &Run::force_line_transition,
             &Run::remove_valence_three, &Run::relax_caps_once,       &Run::collapse_needles};
-        static constexpr std::array<Upkeep, 5> for_facet = {
-            &Run::flip_edges, &Run::relax_caps_once, &Run::collapse_needles, &Run::remesh_thin,
+        // a film vertex of three neighbours beside a line (joined to both its ends) folds
+        // the film in the line's T1, so it goes before the T1 is forced
+        static constexpr std::array<Upkeep, 7> for_facet = {
+            &Run::flip_edges,           &Run::relax_caps_once,      &Run::collapse_needles,
+            &Run::remesh_thin,          &Run::force_line_transition, &Run::remove_valence_three,
             &Run::force_line_transition};
         const bool edge = e.kind == "collapsing edge";
         if (!edge && e.kind != "collapsing facet") return false;
