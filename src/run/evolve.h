@@ -63,7 +63,9 @@ struct EvolveOptions {
     /// cannot be made (the body has more than four neighbouring cells, is all the cluster
     /// has, meets a wall; or the pop would raise the energy) ends the run as without it, the
     /// reason added to the message. With it evolve also keeps the mesh up (collapses, splits,
-    /// flips: EvolveResult::collapsed_edges).
+    /// flips: EvolveResult::collapsed_edges), and in a cluster with quadruple points a
+    /// collapsing edge or facet that the upkeep leaves ends the run only below a tenth of the
+    /// watch's limits (EvolveResult::deferred).
     bool transitions = true;
     /// The r > 1 iteration of every step (flows/stepper.h).
     FixedPointOptions fixed_point;
