@@ -468,34 +468,48 @@ local function four_cells(first)
   end
   return froth.cluster{vertices = P, surfaces = surfaces, bodies = bodies}
 end
-do
-  local v = corners
-  -- the lines bend a little at their midpoints (so no facet lies along a line)
+-- The lines' first vertices at their midpoints, bent a little (so no facet lies along a line).
+local function bent_first()
   local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
   local first = {}
   for i = 1, 4 do
-    first[i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
+    local v = corners[i]
+    first[i] = {0.5 * v[1] + bend[i][1], 0.5 * v[2] + bend[i][2], 0.5 * v[3] + bend[i][3]}
   end
-  local c = four_cells(first)
-  local m = function(i) return 5 + i end
-  -- squeeze film 1|2's corner at the centre: line 2's first vertex turned towards line 1's at
-  -- its distance from the centre, the edge between them now 0.083 against 0.6-0.9 for the rest
-  local a, b = first[1], first[2]
-  local ra, rb = math.sqrt(a[1]^2 + a[2]^2 + a[3]^2), math.sqrt(b[1]^2 + b[2]^2 + b[3]^2)
-  local u = {a[1] / ra, a[2] / ra, a[3] / ra}
-  local w = {b[1] - rb * u[1], b[2] - rb * u[2], b[3] - rb * u[3]} -- b's part across u
-  local wn = math.sqrt(w[1]^2 + w[2]^2 + w[3]^2)
-  local s = 0.03 / rb -- the sine of the squeezed angle
-  local cs = math.sqrt(1 - s * s)
-  c:set_vertex(m(2), {rb * (cs * u[1] + s * w[1] / wn), rb * (cs * u[2] + s * w[2] / wn),
-                      rb * (cs * u[3] + s * w[3] / wn)})
-  T.assert_true(c:report().mesh.min_angle < 2, "the corner is a sliver", tostring(c:report().mesh.min_angle))
+  return first
+end
+local function norm(x) return math.sqrt(x[1]^2 + x[2]^2 + x[3]^2) end
+-- c:collapse_edges(criteria) on the four cells removes exactly one vertex and keeps every line
+-- and quadruple point.
+local function collapses_one(c, criteria, what)
   local quads, lines = #c:quadruple_points(), #c:triple_lines()
-  local r = c:collapse_edges{shorter_than = 0.1}
-  T.assert_equal(r.collapsed, 1, "a line's first edge collapses onto q")
+  local r = c:collapse_edges(criteria)
+  T.assert_equal(r.collapsed, 1, what)
   T.assert_equal(r.vertices, 8, "one vertex less")
   T.assert_equal(#c:quadruple_points(), quads, "every quadruple point stays")
   T.assert_equal(#c:triple_lines(), lines, "and every line")
+end
+-- Line 2's first vertex turned towards line 1's at its own distance from the centre, the angle
+-- between them at the centre of the given sine: film 1|2's corner squeezed at q.
+local function squeezed(first, sine)
+  local a, b = first[1], first[2]
+  local ra, rb = norm(a), norm(b)
+  local u = {a[1] / ra, a[2] / ra, a[3] / ra}
+  local w = {b[1] - rb * u[1], b[2] - rb * u[2], b[3] - rb * u[3]} -- b's part across u
+  local wn = norm(w)
+  local cs = math.sqrt(1 - sine * sine)
+  return {rb * (cs * u[1] + sine * w[1] / wn), rb * (cs * u[2] + sine * w[2] / wn),
+          rb * (cs * u[3] + sine * w[3] / wn)}
+end
+do
+  local first = bent_first()
+  local c = four_cells(first)
+  local m = function(i) return 5 + i end
+  -- squeeze film 1|2's corner at the centre: the edge between the two first vertices is now
+  -- 0.083 against 0.6-0.9 for the rest
+  c:set_vertex(m(2), squeezed(first, 0.03 / norm(first[2])))
+  T.assert_true(c:report().mesh.min_angle < 2, "the corner is a sliver", tostring(c:report().mesh.min_angle))
+  collapses_one(c, {shorter_than = 0.1}, "a line's first edge collapses onto q")
   T.assert_true(shortest_edge(c) > 0.5, "no short edge is left", tostring(shortest_edge(c)))
 end
 
@@ -533,23 +547,13 @@ end
 -- the way to corner 2. The cap's near side, m to corner 2, would join two lines and may not
 -- collapse; its other side runs along line 1 to corner 1, and m goes there.
 do
-  local first = {}
-  local v = corners
-  local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
-  for i = 1, 4 do
-    first[i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
-  end
+  local first = bent_first()
   local p = {1, -0.1, -0.1}
-  local r = math.sqrt(p[1]^2 + p[2]^2 + p[3]^2)
+  local r = norm(p)
   first[1] = {p[1] - 0.002 * p[1] / r, p[2] - 0.002 * p[2] / r, p[3] - 0.002 * p[3] / r}
   local c = four_cells(first)
   T.assert_true(c:report().mesh.min_angle < 0.2, "a flat cap", tostring(c:report().mesh.min_angle))
-  local quads, lines = #c:quadruple_points(), #c:triple_lines()
-  local r1 = c:collapse_edges{needles = 5}
-  T.assert_equal(r1.collapsed, 1, "the cap's far side collapses")
-  T.assert_equal(r1.vertices, 8, "m goes")
-  T.assert_equal(#c:quadruple_points(), quads, "every quadruple point stays")
-  T.assert_equal(#c:triple_lines(), lines, "and every line")
+  collapses_one(c, {needles = 5}, "the cap's far side collapses: m goes")
   T.assert_near(c:vertex(1)[1], 1, 1e-15, "corner 1 keeps its place")
   T.assert_true(c:report().mesh.min_angle > 5, "no cap is left", tostring(c:report().mesh.min_angle))
 end
@@ -559,21 +563,8 @@ end
 -- (deferred), and stops at once below that. Film 1|2's corner at q squeezed to about 0.2
 -- (0.02) degrees, as in 5c, its three corners held.
 local function squeezed_corner(sine)
-  local v = corners
-  local bend = {{0.1, -0.05, 0}, {0, 0.1, -0.05}, {-0.05, 0, 0.1}, {0.1, 0, -0.05}}
-  local first = {}
-  for i = 1, 4 do
-    first[i] = {0.5 * v[i][1] + bend[i][1], 0.5 * v[i][2] + bend[i][2], 0.5 * v[i][3] + bend[i][3]}
-  end
-  local a, b = first[1], first[2]
-  local ra, rb = math.sqrt(a[1]^2 + a[2]^2 + a[3]^2), math.sqrt(b[1]^2 + b[2]^2 + b[3]^2)
-  local u = {a[1] / ra, a[2] / ra, a[3] / ra}
-  local w = {b[1] - rb * u[1], b[2] - rb * u[2], b[3] - rb * u[3]}
-  local wn = math.sqrt(w[1]^2 + w[2]^2 + w[3]^2)
-  local cs = math.sqrt(1 - sine * sine)
-  first[2] = {rb * (cs * u[1] + sine * w[1] / wn), rb * (cs * u[2] + sine * w[2] / wn),
-              rb * (cs * u[3] + sine * w[3] / wn)}
-  first[1] = {ra * u[1], ra * u[2], ra * u[3]}
+  local first = bent_first()
+  first[2] = squeezed(first, sine)
   local c = four_cells(first)
   c:fix({5, 6, 7})
   return c
