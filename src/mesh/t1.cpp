@@ -41,9 +41,10 @@ class T1 {
   public:
     /// shown: the line's id in the messages and the record (its id before splits that
     /// renumbered the lines), line if negative
-    T1(const Cluster& c, int line, double min_side, double smallest_side, int shown = -1)
+    T1(const Cluster& c, int line, double min_side, double smallest_side, bool fit,
+       int shown = -1)
         : c_(c), line_(line), shown_(shown >= 0 ? shown : line), min_side_(min_side),
-          smallest_side_(smallest_side), name_(line_name(shown_)),
+          smallest_side_(smallest_side), fit_(fit), name_(line_name(shown_)),
           cells_(surface_cells(c)) {}
 
     Cluster run(TransitionRecord* record);
@@ -66,6 +67,7 @@ class T1 {
     const Cluster& c_;
     const int line_, shown_;
     const double min_side_, smallest_side_;
+    const bool fit_; // corners may be moved off slivers (surgery::fit_corners)
     const std::string name_;
     const std::vector<std::array<int, 2>> cells_; // the bodies on each surface's sides
     std::vector<int> seg_;                 // the line's vertices, a first
@@ -200,7 +202,7 @@ std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
             side_ = side;
             return V;
         }
-        if (surgery::fit_corners(spec, V, moved_, {n_, n_ + 1, n_ + 2}, side) &&
+        if (fit_ && surgery::fit_corners(spec, V, moved_, {n_, n_ + 1, n_ + 2}, side) &&
             film_area(V) >= 0.5 * std::sqrt(3.0) / 4 * side * side) {
             side_ = side, fitted_ = true;
             return V;
@@ -314,23 +316,24 @@ Cluster T1::run(TransitionRecord* record) {
 } // namespace
 
 Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, double min_side,
-                        double smallest_side) {
+                        double smallest_side, bool fit_corners) {
     if (line < 0 || line >= static_cast<int>(c.triple_lines().size()))
         throw InvalidInput("t1: triple line " + std::to_string(line + 1) + " does not exist (the "
                            "cluster has " + std::to_string(c.triple_lines().size()) + ")");
     // a triangular film of one facet beside the line would be left without a facet: its
     // other sides are split first, and it becomes a lens of two facets
     std::optional<Cluster> split = split_films_emptied_by_t1(c, line);
-    if (!split) return T1(c, line, min_side, smallest_side).run(record);
+    if (!split) return T1(c, line, min_side, smallest_side, fit_corners).run(record);
     const std::vector<int>& vertices = c.triple_lines()[line].vertices; // ids the splits keep
     const auto& lines = split->triple_lines();
     for (std::size_t l = 0; l < lines.size(); ++l) {
         const std::vector<int>& w = lines[l].vertices;
         if (w != vertices && !std::equal(vertices.rbegin(), vertices.rend(), w.begin(), w.end()))
             continue;
-        return T1(*split, static_cast<int>(l), min_side, smallest_side, line).run(record);
+        return T1(*split, static_cast<int>(l), min_side, smallest_side, fit_corners, line)
+            .run(record);
     }
-    return T1(c, line, min_side, smallest_side).run(record); // not found: it says why not
+    return T1(c, line, min_side, smallest_side, fit_corners).run(record); // not found: why not
 }
 
 } // namespace froth

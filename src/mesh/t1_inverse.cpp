@@ -50,9 +50,10 @@ struct Side {
 class InverseT1 {
   public:
     /// sides: 3 for the inverse T1 of a triangular film, 2 for the collapse of a lens.
-    InverseT1(const Cluster& c, int film, int sides, double min_length, double smallest_length)
+    InverseT1(const Cluster& c, int film, int sides, double min_length, double smallest_length,
+              bool fit)
         : c_(c), film_(film), n_sides_(sides), min_length_(min_length),
-          smallest_length_(smallest_length),
+          smallest_length_(smallest_length), fit_(fit),
           name_(std::string(sides == 3 ? "t1_inverse" : "collapse_two_sided_film") +
                 ": surface " + std::to_string(film + 1)),
           cells_(surface_cells(c)) {}
@@ -77,6 +78,7 @@ class InverseT1 {
     const int film_;
     const int n_sides_;
     const double min_length_, smallest_length_;
+    const bool fit_; // the line's ends may be moved off slivers (surgery::fit_corners)
     const std::string name_;
     const std::vector<std::array<int, 2>> cells_;
     int d_cell_ = -1, e_cell_ = -1;       // D, E
@@ -275,7 +277,7 @@ std::vector<Vec3> InverseT1::place_line(const ClusterSpec& spec) {
             length_ = length;
             return V;
         }
-        if (surgery::fit_corners(spec, V, moved_, {n_, n_ + 1}, length) &&
+        if (fit_ && surgery::fit_corners(spec, V, moved_, {n_, n_ + 1}, length) &&
             (V[n_] - V[n_ + 1]).norm() >= 0.5 * length) {
             length_ = length, fitted_ = true;
             return V;
@@ -416,20 +418,20 @@ Cluster InverseT1::run(TransitionRecord* record) {
 } // namespace
 
 Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record,
-                        double min_length, double smallest_length) {
+                        double min_length, double smallest_length, bool fit_corners) {
     if (surface < 0 || surface >= c.n_surfaces())
         throw InvalidInput("t1_inverse: surface " + std::to_string(surface + 1) + " does not "
                            "exist (the cluster has " + std::to_string(c.n_surfaces()) + ")");
-    return InverseT1(c, surface, 3, min_length, smallest_length).run(record);
+    return InverseT1(c, surface, 3, min_length, smallest_length, fit_corners).run(record);
 }
 
 Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord* record,
-                                double min_length) {
+                                double min_length, bool fit_corners) {
     if (surface < 0 || surface >= c.n_surfaces())
         throw InvalidInput("collapse_two_sided_film: surface " + std::to_string(surface + 1) +
                            " does not exist (the cluster has " + std::to_string(c.n_surfaces()) +
                            ")");
-    return InverseT1(c, surface, 2, min_length, 0).run(record);
+    return InverseT1(c, surface, 2, min_length, 0, fit_corners).run(record);
 }
 
 } // namespace froth

@@ -95,7 +95,7 @@ Cluster absorb_body(const Cluster& c, int body, int into = -1, TransitionRecord*
 /// whose films would be pinched or folded by the surgery (a mesh too coarse there), or where
 /// every side allowed turns a facet over.
 Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = nullptr,
-                        double min_side = 0, double smallest_side = 0);
+                        double min_side = 0, double smallest_side = 0, bool fit_corners = true);
 
 /// The inverse T1 (the H -> I transition, Evolver's pop_tri_to_edge): surface `surface`, a
 /// film between cells D and E (D != E) bounded by three open triple lines between three
@@ -116,7 +116,8 @@ Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = n
 /// on two sides, with fixed or wall vertices, whose collapse would pinch or fold a film, or
 /// where every length allowed turns a facet over.
 Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record = nullptr,
-                        double min_length = 0, double smallest_length = 0);
+                        double min_length = 0, double smallest_length = 0,
+                        bool fit_corners = true);
 
 /// The collapse of a two-sided film (a lens between two quadruple points q_1 and q_2, left where
 /// a T1 takes a side of a triangular film): surface `surface`, between cells D and E, bounded
@@ -132,7 +133,7 @@ Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record 
 /// why, nothing changed) as t1_film_to_line, for a film that is not a disk bounded by two
 /// triple lines between two quadruple points with distinct third cells.
 Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord* record = nullptr,
-                                double min_length = 0);
+                                double min_length = 0, bool fit_corners = true);
 
 /// Mesh upkeep: what collapse_short_edges made.
 struct EdgeCollapseResult {

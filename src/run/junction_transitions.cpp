@@ -216,9 +216,11 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
     try {
         // the product is at least twice the limit in size where the mesh lets it be
         const int id = acted.id;
-        Cluster changed = !film                ? t1_line_to_film(c, id, &record, 2 * limit)
-                          : acted.sides() == 3 ? t1_film_to_line(c, id, &record, 2 * limit)
-                                               : collapse_two_sided_film(c, id, &record);
+        const bool fit = fit_corners_;
+        Cluster changed = !film ? t1_line_to_film(c, id, &record, 2 * limit, 0, fit)
+                          : acted.sides() == 3
+                              ? t1_film_to_line(c, id, &record, 2 * limit, 0, fit)
+                              : collapse_two_sided_film(c, id, &record, 0, fit);
         // corners moved off slivers may have been moved through another film: the facets
         // around the transition, out to a few edges beyond what it moved
         const Region around{record.point, 4 * record.size + 3 * mean_edge_length(c)};

@@ -49,7 +49,10 @@ class JunctionTransitions {
   public:
     /// min_line_fraction: WatchOptions::min_line_fraction. original_body: the bodies' ids at the
     /// start of the run, by their ids now (pops remove entries); the memory's keys use them.
-    explicit JunctionTransitions(double min_line_fraction) : fraction_(min_line_fraction) {}
+    /// fit_corners: transitions may move their new corners off slivers (surgery::fit_corners),
+    /// as evolve's do; minimize's do not, since its rounds stop on the slivers that can leave
+    explicit JunctionTransitions(double min_line_fraction, bool fit_corners = true)
+        : fraction_(min_line_fraction), fit_corners_(fit_corners) {}
 
     /// The sizes of c's junctions, for the next look.
     void remember(const Cluster& c, const std::vector<int>& original_body);
@@ -91,6 +94,7 @@ class JunctionTransitions {
     std::string undoes_recent(const std::vector<int>& pair, bool force) const;
 
     double fraction_;
+    bool fit_corners_;
     // the sizes of the junctions at the last look, by their cells
     std::map<std::vector<int>, double> line_sizes_, film_sizes_;
     /// True if j (a film with `film`) is the product of an earlier transition that has not
