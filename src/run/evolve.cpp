@@ -333,7 +333,8 @@ class Run {
             &Run::relax_short_edges,    &Run::force_film_transition, &Run::force_line_transition,
             &Run::remove_valence_three, &Run::relax_caps_once,       &Run::collapse_needles};
         // a film vertex of three neighbours beside a line (joined to both its ends) folds
-        // the film in the line's T1, so it goes before the T1 is forced
+        // the film in the line's T1: where the forced T1s fail, such vertices go and the T1s
+        // are forced again
         static constexpr std::array<Upkeep, 7> for_facet = {
             &Run::flip_edges,           &Run::relax_caps_once,      &Run::collapse_needles,
             &Run::remesh_thin,          &Run::force_line_transition, &Run::remove_valence_three,

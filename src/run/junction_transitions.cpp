@@ -216,17 +216,18 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
     try {
         // the product is at least twice the limit in size where the mesh lets it be
         const int id = acted.id;
-        const bool fit = fit_corners_;
-        Cluster changed = !film ? t1_line_to_film(c, id, &record, 2 * limit, 0, fit)
+        Cluster changed = !film ? t1_line_to_film(c, id, &record, 2 * limit, 0, fit_corners_)
                           : acted.sides() == 3
-                              ? t1_film_to_line(c, id, &record, 2 * limit, 0, fit)
-                              : collapse_two_sided_film(c, id, &record, 0, fit);
-        // corners moved off slivers may have been moved through another film: the facets
-        // around the transition, out to a few edges beyond what it moved
-        const Region around{record.point, 4 * record.size + 3 * mean_edge_length(c)};
-        if (record.fitted && !find_self_intersections(changed, 1, &around).empty())
-            throw TopologyError("its new corners, moved off the slivers beside it, would cross "
-                                "a film");
+                              ? t1_film_to_line(c, id, &record, 2 * limit, 0, fit_corners_)
+                              : collapse_two_sided_film(c, id, &record, 0, fit_corners_);
+        if (record.fitted) {
+            // corners moved off slivers may have been moved through another film: the facets
+            // around the transition, out to a few edges beyond what it moved
+            const Region around{record.point, 4 * record.size + 3 * mean_edge_length(c)};
+            if (!find_self_intersections(changed, 1, &around).empty())
+                throw TopologyError("its new corners, moved off the slivers beside it, would "
+                                    "cross a film");
+        }
         event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),
                                 energy(changed)};
         (film ? event.film : event.line) = id;
