@@ -1,17 +1,19 @@
 -- The temporal order of c:step{order = 1 | 2} (docs/benchmarks.md "Order in time"):
---   froth bench/bench_order.lua [cases=sphere,sd,bubble,auto] [levels=4] [relax=0]
+--   froth bench/bench_order.lua [cases=sphere,sd,bubble,auto] [levels=4] [relax=0] [sd_level=2]
+--                               [bubble_h=0.2]
 -- sphere: MCF of the icosphere (froth.sphere{levels}) to t = 0.05; errors of the energy and of
 --   R from the volume against the same scheme at tau = T/1024 (the time error), and of R
 --   against the exact sqrt(1 - 4t) (time and space).
--- sd: surface diffusion of r = 1 + 0.05 P2(cos theta) on the icosphere of level 2 to t = 0.02,
+-- sd: surface diffusion of r = 1 + 0.05 P2(cos theta) on the icosphere of level sd_level to t = 0.02,
 --   relaxed first to BGN's tangential condition (1000 steps of 1e-9); energy error against
 --   order 2 at T/1024.
--- bubble: MCF of froth.double_bubble{h = 0.2} to t = 0.02 after 20 order-1 steps of 1e-3;
+-- bubble: MCF of froth.double_bubble{h = bubble_h} to t = 0.02 after 20 order-1 steps of 1e-3;
 --   energy and volume errors against order 2 at T/512.
 -- auto: tau = "auto" against fixed order-2 steps, MCF of the icosphere of level 2 to t = 0.24
 --   (extinction at 0.25); error of R from the volume against order 2 at T/4096.
 -- Slopes are log2 of the ratio of successive errors. Seconds are the run's wall time.
-local opts = require("froth.script").options({cases = "sphere,sd,bubble,auto", levels = 4, relax = 0},
+local opts = require("froth.script").options({cases = "sphere,sd,bubble,auto", levels = 4, relax = 0,
+                                              sd_level = 2, bubble_h = 0.2},
                                              arg)
 local cases = {}
 for name in tostring(opts.cases):gmatch("[^,]+") do cases[name] = true end
@@ -64,24 +66,25 @@ if cases.sphere then
 end
 
 if cases.sd then
-  local base = froth.sphere{levels = 2}
+  local base = froth.sphere{levels = opts.sd_level}
   for v = 1, base:info().vertices do
     local x = base:vertex(v)
     local r = 1 + 0.05 * (1.5 * x[3] * x[3] - 0.5)
     base:set_vertex(v, r * x[1], r * x[2], r * x[3])
   end
   base:evolve{flow = "sd", tau = 1e-9, steps = 1000, progress = false}
-  table_of("SD of a P2 mode on the icosphere, level 2 (162 vertices), to t = 0.02",
+  table_of(("SD of a P2 mode on the icosphere, level %d (%d vertices), to t = 0.02"):format(
+           opts.sd_level, base:info().vertices),
            function() return base:clone() end, "sd", 0.02, {8, 16, 32, 64, 128}, 1024, {
     {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
   })
 end
 
 if cases.bubble and froth.has("gmsh") then
-  local base = froth.double_bubble{h = 0.2}
+  local base = froth.double_bubble{h = opts.bubble_h}
   base:evolve{flow = "mcf", tau = 1e-3, steps = 20, progress = false}
-  table_of(("MCF of the double bubble, h = 0.2 (%d vertices), to t = 0.02 after t = 0.02"):format(
-           base:info().vertices), function() return base:clone() end, "mcf", 0.02,
+  table_of(("MCF of the double bubble, h = %g (%d vertices), to t = 0.02 after t = 0.02"):format(
+           opts.bubble_h, base:info().vertices), function() return base:clone() end, "mcf", 0.02,
            {4, 8, 16, 32, 64}, 512, {
     {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
     {name = "volume 1", value = function(c, ref) return c:volumes()[1] - ref:volumes()[1] end},

@@ -11,6 +11,10 @@
 namespace froth {
 namespace {
 
+/// Facets with a corner below this (degrees) lose their shortest side in the upkeep between
+/// rounds: five times minimize's collapse angle, ten times the watch's.
+constexpr double kNeedleAngle = 5;
+
 bool stopped_on_a_facet(const MinimizeResult& r) {
     return r.stop_reason.rfind("topology: a facet angle", 0) == 0;
 }
@@ -65,11 +69,33 @@ int tidy_mesh(Cluster& c, TransitionMinimizeResult& out) {
     if (relaxed.cluster) c = std::move(*relaxed.cluster);
     out.relaxed_vertices += relaxed.moved;
     EdgeCollapseCriteria needles;
-    needles.needle_angle = 5; // five times minimize's collapse angle, ten times the watch's
+    needles.needle_angle = kNeedleAngle;
     EdgeCollapseResult thin = collapse_edges(c, needles);
     if (thin.cluster) c = std::move(*thin.cluster);
     out.collapsed_edges += collapsed.collapsed + thin.collapsed;
     return collapsed.collapsed + thin.collapsed;
+}
+
+/// A sliver that more passes of the needles' collapse and the flips leave (sliver_left), if
+/// any. A pass collapses only in disjoint neighbourhoods, so a sliver next to one that a pass
+/// took can be left for the next: the 1000-cell foam stopped after 16 iterations on a flat cap
+/// of 0.06 degrees between two lines that the second of two more passes removed.
+std::optional<std::string> sliver_left_after_passes(Cluster& c, TransitionMinimizeResult& out) {
+    constexpr int kMorePasses = 4;
+    std::optional<std::string> sliver = sliver_left(c);
+    for (int pass = 0; sliver && pass < kMorePasses; ++pass) {
+        EdgeCollapseCriteria needles;
+        needles.needle_angle = kNeedleAngle;
+        EdgeCollapseResult thin = collapse_edges(c, needles);
+        EquiangulateResult flipped = equiangulate(thin.cluster ? *thin.cluster : c);
+        if (!thin.cluster && !flipped.cluster) break;
+        if (flipped.cluster) c = std::move(*flipped.cluster);
+        else c = std::move(*thin.cluster);
+        out.collapsed_edges += thin.collapsed;
+        out.flipped_edges += flipped.flips;
+        sliver = sliver_left(c);
+    }
+    return sliver;
 }
 
 } // namespace
@@ -107,7 +133,7 @@ TransitionMinimizeResult minimize_with_transitions(Cluster& c,
                 out.result.stop_reason += "; " + junctions.refused();
             break;
         }
-        if (const auto sliver = sliver_left(c)) {
+        if (const auto sliver = sliver_left_after_passes(c, out)) {
             out.result.stop_reason += "; after the transitions " + *sliver +
                                       " (the mesh upkeep did not remove it)";
             break;
