@@ -38,6 +38,7 @@ void push_minimize_result(lua_State* L, const MinimizeResult& r,
     set_integer(L, "collapsed_edges", t->collapsed_edges);
     set_integer(L, "flipped_edges", t->flipped_edges);
     set_integer(L, "relaxed_vertices", t->relaxed_vertices);
+    set_integer(L, "deferred", t->deferred);
     push_transition_events(L, t->events);
     lua_setfield(L, -2, "events");
 }

@@ -37,16 +37,21 @@ int make_transitions(Cluster& c, JunctionTransitions& junctions, bool force, int
     return made;
 }
 
-/// A facet with a corner angle below 0.1 degree (a tenth of minimize's collapse limit) that
-/// the transitions and the upkeep left, named (the next round would start degenerate); as in
-/// evolve with transitions, an angle facing a one-edge line between quadruple points counts
-/// ten times (that line's T1 removes the needle).
-std::optional<std::string> sliver_left(const Cluster& c) {
+/// A sliver the upkeep leaves below this corner angle (degrees; a tenth of minimize's collapse
+/// limit) is deferred: the next round starts with it (and stops once its angles halve).
+constexpr double kSliverAngle = 0.1;
+/// Below this (a tenth of kSliverAngle, as evolve's deferred defects) the rounds stop.
+constexpr double kHardSliverAngle = 0.01;
+
+/// A facet with a corner angle below `angle` degrees that the transitions and the upkeep
+/// left, named; as in evolve with transitions, an angle facing a one-edge line between
+/// quadruple points counts ten times (that line's T1 removes the needle).
+std::optional<std::string> sliver_left(const Cluster& c, double angle = kSliverAngle) {
     WatchOptions w;
     w.min_volume_fraction = 0;
     w.min_edge_fraction = 0;
     w.lines_to_transitions = true;
-    w.min_facet_angle = 0.1;
+    w.min_facet_angle = angle;
     w.self_intersection_every = 0;
     const std::optional<TopologyEvent> e = TopologyWatch(w).check(c, 0);
     if (!e) return std::nullopt;
@@ -133,10 +138,16 @@ TransitionMinimizeResult minimize_with_transitions(Cluster& c,
                 out.result.stop_reason += "; " + junctions.refused();
             break;
         }
-        if (const auto sliver = sliver_left_after_passes(c, out)) {
-            out.result.stop_reason += "; after the transitions " + *sliver +
-                                      " (the mesh upkeep did not remove it)";
-            break;
+        if (sliver_left_after_passes(c, out)) {
+            // the next round and its transitions often mend it, as evolve's deferred defects;
+            // the 27-cell foams of seeds 1-12 (lloyd = 5) to 100 iterations: 6 of 12 got
+            // there stopping at 0.1 degree, 8 with the deferral (and one to 99)
+            if (const auto hard = sliver_left(c, kHardSliverAngle)) {
+                out.result.stop_reason += "; after the transitions " + *hard +
+                                          " (the mesh upkeep did not remove it)";
+                break;
+            }
+            ++out.deferred;
         }
         junctions.remember(c, bodies);
     }

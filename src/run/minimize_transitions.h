@@ -25,6 +25,9 @@ struct TransitionMinimizeResult {
     int rounds = 0;
     std::vector<TransitionEvent> events; ///< step: the round after which it was made
     int collapsed_edges = 0, flipped_edges = 0, relaxed_vertices = 0;
+    /// rounds that started with a facet below 0.1 degree that the upkeep left (above 0.01
+    /// degree; below, the rounds stop)
+    int deferred = 0;
 };
 
 /// Minimises c as minimize() does; after each round that stops on a collapsing facet, the
