@@ -103,6 +103,27 @@ std::optional<std::string> sliver_left_after_passes(Cluster& c, TransitionMinimi
     return sliver;
 }
 
+/// After a round's transitions and upkeep (`forced`: the transitions were forced): the sliver
+/// the rounds stop on, if any. One that more passes leave is deferred (counted in
+/// out.deferred) above kHardSliverAngle: the next round and its transitions often mend it, as
+/// evolve's deferred defects (the 27-cell foams of seeds 1-12, lloyd = 5, to 100 iterations: 6
+/// of 12 got there stopping at 0.1 degree, 8 with the deferral and one to 99). Below it, if
+/// the round's transitions were not forced, every small junction is forced first, as evolve's
+/// upkeep forces them at a collapsing facet.
+std::optional<std::string> sliver_to_stop_on(Cluster& c, JunctionTransitions& junctions,
+                                             bool forced, const std::vector<int>& bodies,
+                                             TransitionMinimizeResult& out) {
+    if (!sliver_left_after_passes(c, out)) return std::nullopt;
+    if (!forced && sliver_left(c, kHardSliverAngle) &&
+        make_transitions(c, junctions, true, out.rounds, bodies, out.events) > 0) {
+        tidy_mesh(c, out);
+        if (!sliver_left_after_passes(c, out)) return std::nullopt;
+    }
+    std::optional<std::string> hard = sliver_left(c, kHardSliverAngle);
+    if (!hard) ++out.deferred;
+    return hard;
+}
+
 } // namespace
 
 TransitionMinimizeResult minimize_with_transitions(Cluster& c,
@@ -131,23 +152,18 @@ TransitionMinimizeResult minimize_with_transitions(Cluster& c,
             break;
         junctions.new_look();
         int made = make_transitions(c, junctions, false, out.rounds, bodies, out.events);
-        if (made == 0) made = make_transitions(c, junctions, true, out.rounds, bodies, out.events);
+        const bool forced = made == 0;
+        if (forced) made = make_transitions(c, junctions, true, out.rounds, bodies, out.events);
         const int collapsed = tidy_mesh(c, out);
         if (made == 0 && collapsed == 0) {
             if (!junctions.refused().empty())
                 out.result.stop_reason += "; " + junctions.refused();
             break;
         }
-        if (sliver_left_after_passes(c, out)) {
-            // the next round and its transitions often mend it, as evolve's deferred defects;
-            // the 27-cell foams of seeds 1-12 (lloyd = 5) to 100 iterations: 6 of 12 got
-            // there stopping at 0.1 degree, 8 with the deferral (and one to 99)
-            if (const auto hard = sliver_left(c, kHardSliverAngle)) {
-                out.result.stop_reason += "; after the transitions " + *hard +
-                                          " (the mesh upkeep did not remove it)";
-                break;
-            }
-            ++out.deferred;
+        if (const auto hard = sliver_to_stop_on(c, junctions, forced, bodies, out)) {
+            out.result.stop_reason += "; after the transitions " + *hard +
+                                      " (the mesh upkeep did not remove it)";
+            break;
         }
         junctions.remember(c, bodies);
     }
