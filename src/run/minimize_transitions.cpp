@@ -107,7 +107,7 @@ std::optional<std::string> sliver_left_after_passes(Cluster& c, TransitionMinimi
 /// the rounds stop on, if any. One that more passes leave is deferred (counted in
 /// out.deferred) above kHardSliverAngle: the next round and its transitions often mend it, as
 /// evolve's deferred defects (the 27-cell foams of seeds 1-12, lloyd = 5, to 100 iterations: 6
-/// of 12 got there stopping at 0.1 degree, 8 with the deferral and one to 99). Below it, if
+/// of 12 got there stopping at 0.1 degree, 9 with the deferral and one to 99). Below it, if
 /// the round's transitions were not forced, every small junction is forced first, as evolve's
 /// upkeep forces them at a collapsing facet.
 std::optional<std::string> sliver_to_stop_on(Cluster& c, JunctionTransitions& junctions,
