@@ -40,6 +40,16 @@ function M.assert_equal(actual, expected, what)
                 ("%s, expected %s"):format(tostring(actual), tostring(expected)))
 end
 
+--- Asserts that every quadruple point of c meets four triple-line edges (a Plateau point).
+function M.assert_plateau_points(c)
+  for _, q in ipairs(c:quadruple_points()) do
+    local at = c:edges{where = function(e)
+      return e.triple_line and (e.vertices[1] == q or e.vertices[2] == q)
+    end}
+    M.assert_equal(#at, 4, "quadruple point " .. q .. " meets four triple-line edges")
+  end
+end
+
 --- Relative difference |a - b| / |b|.
 function M.rel(a, b) return math.abs(a - b) / math.abs(b) end
 

@@ -245,12 +245,7 @@ for b = 1, 5 do
   T.assert_true(math.abs(lens_cluster:volumes()[b] - V0[b]) < 0.02 * V0[b],
                 "body " .. b .. " keeps its volume", tostring(lens_cluster:volumes()[b]))
 end
-for _, q in ipairs(lens_cluster:quadruple_points()) do
-  local at = lens_cluster:edges{where = function(e)
-    return e.triple_line and (e.vertices[1] == q or e.vertices[2] == q)
-  end}
-  T.assert_equal(#at, 4, "quadruple point " .. q .. " meets four triple-line edges")
-end
+T.assert_plateau_points(lens_cluster)
 T.assert_true(math.abs(lens.energy_after - lens.energy_before) < 1e-3 * lens.energy_before,
               "the collapse of a small lens changes the energy by little",
               ("%.9g -> %.9g"):format(lens.energy_before, lens.energy_after))

@@ -19,12 +19,7 @@ T.assert_true(#r.events >= 10, "through transitions", tostring(#r.events))
 T.assert_true(c:energy() < start:energy(), "to a lower energy",
               ("%.9g against %.9g"):format(c:energy(), start:energy()))
 T.assert_true(r.volume_error <= 1e-10, "at the target volumes", tostring(r.volume_error))
-for _, q in ipairs(c:quadruple_points()) do
-  local at = c:edges{where = function(e)
-    return e.triple_line and (e.vertices[1] == q or e.vertices[2] == q)
-  end}
-  T.assert_equal(#at, 4, "quadruple point " .. q .. " meets four triple-line edges")
-end
+T.assert_plateau_points(c)
 -- the watch's crossing test (CGAL) on the state left, by a step too short to move it
 local w = c:clone():evolve{flow = "mcf", tau = 1e-12, steps = 1, progress = false,
                            transitions = false, watch = {self_intersection_every = 1,

@@ -75,10 +75,5 @@ end
 local inverse = (count["inverse T1"] or 0) - (count["T1"] or 0) + 2 * (count["two-sided film"] or 0)
 T.assert_equal(#c:quadruple_points(), #start:quadruple_points() - inverse,
                "an inverse T1 takes one quadruple point, a T1 gives one, a lens's collapse two")
-for _, q in ipairs(c:quadruple_points()) do
-  local at = c:edges{where = function(e)
-    return e.triple_line and (e.vertices[1] == q or e.vertices[2] == q)
-  end}
-  T.assert_equal(#at, 4, "quadruple point " .. q .. " meets four triple-line edges")
-end
+T.assert_plateau_points(c)
 T.summary()
