@@ -84,7 +84,8 @@ int tidy_mesh(Cluster& c, TransitionMinimizeResult& out) {
 /// A sliver that more passes of the needles' collapse and the flips leave (sliver_left), if
 /// any. A pass collapses only in disjoint neighbourhoods, so a sliver next to one that a pass
 /// took can be left for the next: the 1000-cell foam stopped after 16 iterations on a flat cap
-/// of 0.06 degrees between two lines that the second of two more passes removed.
+/// of 0.06 degrees between two lines, which more passes removed (the smallest angle 0.059 ->
+/// 0.16 -> 0.98 degrees in two).
 std::optional<std::string> sliver_left_after_passes(Cluster& c, TransitionMinimizeResult& out) {
     constexpr int kMorePasses = 4;
     std::optional<std::string> sliver = sliver_left(c);
