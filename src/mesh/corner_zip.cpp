@@ -11,6 +11,15 @@
 // along (q, b)), the others take q, which keeps its place. The lines lose their first edges,
 // the quadruple point moves up the film by one edge: the retreat of the corner, which a
 // parametric step cannot make since it keeps every vertex on its line.
+//
+// zip_slit: the same corner closed over a whole edge, a slit. The first vertex a of the line
+// (D, E, X) lies on the first edge (q, b) of (D, E, Y), inside it (b may be a quadruple point:
+// a one-edge line), so no edge of the film is short. In cross-section the slit is a 2D
+// Plateau border of vanishing length, four films at a point; what resolves it is the 2D T1
+// along the slit: the lines' other cells X and Y meet there, the quadruple point moving to
+// where the lines part. The edge (q, b) is split at a's foot m, and a and m go onto q at
+// their midpoint: the lines (D, E, X) and (D, E, Y) lose the slit, q's two other lines, the
+// sides of the film X|Y, reach along it to the new q. Repeated, this walks q up a longer slit.
 #include "mesh/transitions.h"
 
 #include "core/errors.h"
@@ -139,7 +148,85 @@ std::optional<Cluster> zip(const Cluster& c, const Squeeze& z) {
     return zip(c, z, c.position(z.q));
 }
 
+/// A slit at quadruple point q: the first vertex a of one of q's lines lies `distance` from
+/// the first edge (q, b) of another line of a film they share, at its point q + t (b - q).
+struct Slit {
+    double distance;
+    int q, a, b;
+    double t;
+};
+
+/// The slits narrower than min_length, narrowest first; the foot of a must lie inside
+/// (q, b) (t in [0.1, 0.9]: near its ends a short edge collapses or zip_squeezed_corner
+/// acts) and the lines must leave q within kTogether.
+std::vector<Slit> find_slits(const Cluster& c, double min_length) {
+    const std::vector<int> rank = surgery::vertex_ranks(c);
+    std::vector<Slit> out;
+    for (int q : c.quadruple_points()) {
+        if (rank[q] != 2) continue;
+        const std::vector<int> at_q = c.vertex_junction_edges(q);
+        const auto other_end = [&](int e) {
+            const JunctionEdge& j = c.junction_edges()[e];
+            return j.a == q ? j.b : j.a;
+        };
+        const auto unwrapped = [&](int v) { return c.position(v) + c.edge_shift(q, v); };
+        for (int ea : at_q)
+            for (int eb : at_q) {
+                const JunctionEdge &ja = c.junction_edges()[ea], &jb = c.junction_edges()[eb];
+                if (ja.line == jb.line) continue;
+                const int a = other_end(ea), b = other_end(eb);
+                if (rank[a] != 1 || rank[b] < 1) continue;
+                const bool share_a_film = std::any_of(
+                    ja.surfaces.begin(), ja.surfaces.end(), [&](int s) {
+                        return std::find(jb.surfaces.begin(), jb.surfaces.end(), s) !=
+                               jb.surfaces.end();
+                    });
+                if (!share_a_film) continue;
+                const Vec3 x = c.position(q), ua = unwrapped(a) - x, ub = unwrapped(b) - x;
+                const double t = ua.dot(ub) / ub.squaredNorm();
+                if (!(t >= 0.1 && t <= 0.9)) continue;
+                const double distance = (ua - t * ub).norm();
+                if (distance < min_length &&
+                    ua.normalized().dot(ub.normalized()) > std::cos(kTogether))
+                    out.push_back({distance, q, a, b, t});
+            }
+    }
+    std::sort(out.begin(), out.end(),
+              [](const Slit& x, const Slit& y) { return x.distance < y.distance; });
+    return out;
+}
+
+/// The zip of one slit: (q, b) split at a's foot m, a and m onto q at their midpoint, or
+/// where that turns a facet over, q in its place.
+std::optional<Cluster> zip(const Cluster& c, const Slit& z) {
+    std::optional<Cluster> made;
+    try {
+        made.emplace(surgery::split_edge(c, z.q, z.b, z.t));
+    } catch (const TopologyError&) {
+        return std::nullopt; // an edge on a wall or wire
+    }
+    const Cluster& split = *made;
+    const int m = c.n_vertices();
+    const Squeeze squeeze{z.distance, z.q, {z.a, m}};
+    const Vec3 x = split.position(z.q);
+    const Vec3 part = x + 0.5 * (split.position(z.a) + split.edge_shift(z.q, z.a) +
+                                 split.position(m) + split.edge_shift(z.q, m) - 2 * x);
+    if (auto r = zip(split, squeeze, part)) return r;
+    return zip(split, squeeze, x);
+}
+
 } // namespace
+
+EdgeCollapseResult zip_slit(const Cluster& c, double min_length) {
+    EdgeCollapseResult r;
+    const std::vector<Slit> slits = find_slits(c, min_length);
+    for (const Slit& z : slits)
+        if ((r.cluster = zip(c, z))) {
+            r.collapsed = 2;
+            return r;
+        }
+    return r;
+}
 
 EdgeCollapseResult zip_squeezed_corner(const Cluster& c, double min_length) {
     EdgeCollapseResult r;

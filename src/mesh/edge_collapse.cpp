@@ -262,7 +262,11 @@ EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& 
     EdgeCollapseResult r;
     Collapser collapser(c, criteria);
     r.collapsed = collapser.pass();
-    if (r.collapsed == 0) return zip_squeezed_corner(c, criteria.min_length);
+    if (r.collapsed == 0) {
+        if (criteria.min_length <= 0) return r;
+        r = zip_squeezed_corner(c, criteria.min_length);
+        return r.cluster ? std::move(r) : zip_slit(c, criteria.min_length);
+    }
     ClusterSpec& spec = collapser.spec();
     const std::vector<int> used = surgery::keep_used_vertices(spec, collapser.positions());
     surgery::copy_vertex_lists(c, [&](int v) { return used[v]; }, spec);

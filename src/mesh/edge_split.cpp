@@ -9,6 +9,7 @@
 // midpoints would have to be projected, as refine does).
 #include "mesh/transitions.h"
 
+#include "core/errors.h"
 #include "mesh/transition_surgery.h"
 
 #include <algorithm>
@@ -22,9 +23,11 @@ namespace {
 
 using EdgeKey = std::pair<int, int>;
 
-/// The splits of the edges for which split(a, b, length) is true (a < b), longest first.
+/// The splits of the edges for which split(a, b, length) is true (a < b), longest first, each
+/// at the fraction `at` of its length from a (the midpoint by default).
 EdgeSplitResult split_edges_where(const Cluster& c,
-                                  const std::function<bool(int, int, double)>& split_it) {
+                                  const std::function<bool(int, int, double)>& split_it,
+                                  double at = 0.5) {
     EdgeSplitResult r;
     // the edges to split, with their lengths and the facets at each
     std::map<EdgeKey, std::pair<double, std::vector<std::array<int, 2>>>> edges;
@@ -60,7 +63,7 @@ EdgeSplitResult split_edges_where(const Cluster& c,
             continue;
         const auto [a, b] = e;
         const int m = static_cast<int>(V.size());
-        V.push_back(c.position(a) + 0.5 * (c.position(b) - c.position(a) + c.edge_shift(a, b)));
+        V.push_back(c.position(a) + at * (c.position(b) - c.position(a) + c.edge_shift(a, b)));
         for (const auto& [si, f] : facets) {
             touched.insert({si, f});
             auto& s = spec.surfaces[si];
@@ -100,6 +103,17 @@ EdgeSplitResult split_edges_where(const Cluster& c,
 }
 
 } // namespace
+
+namespace surgery {
+Cluster split_edge(const Cluster& c, int a, int b, double t) {
+    if (a > b) std::swap(a, b), t = 1 - t;
+    EdgeSplitResult r = split_edges_where(c, [&](int x, int y, double) { return x == a && y == b; }, t);
+    if (!r.cluster)
+        throw TopologyError("split_edge: vertices " + std::to_string(a + 1) + " and " +
+                            std::to_string(b + 1) + " share no edge that can be split");
+    return std::move(*r.cluster);
+}
+} // namespace surgery
 
 EdgeSplitResult split_long_edges(const Cluster& c, double max_length) {
     return split_edges_where(c, [&](int, int, double l) { return l > max_length; });

@@ -99,4 +99,9 @@ bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
 bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vector<MovedFacet>& moved,
                  const std::vector<int>& movable, double max_shift);
 
+/// c with its edge (a, b) split at a + t (b - a) (b unwrapped in a's frame), each facet at it
+/// into two in the same orientation (as split_long_edges); the new vertex is the last.
+/// \throw TopologyError if a and b share no edge, or it lies on a wall or wire.
+Cluster split_edge(const Cluster& c, int a, int b, double t);
+
 } // namespace froth::surgery

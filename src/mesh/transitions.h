@@ -180,6 +180,18 @@ EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& 
 /// Materials, time and the bodies' reference and target volumes are kept.
 EdgeCollapseResult zip_squeezed_corner(const Cluster& c, double min_length);
 
+/// Mesh upkeep for a film's corner closed to a slit (mesh/corner_zip.cpp): where the first
+/// vertex a of a triple line at quadruple point q lies within min_length of the first edge
+/// (q, b) of another of q's lines bounding the same film, inside it (at b - q times 0.1 to
+/// 0.9 from q) and the two lines leave q within 15 degrees, the edge (q, b) is split at a's
+/// foot m and a and m go onto q, which moves to their midpoint (where that turns a facet
+/// over, q keeps its place). The quadruple point moves up the slit by one edge; its two
+/// other lines, the sides of the film of the lines' other two cells, reach along to it: a
+/// 2D T1 along the slit. The narrowest slit whose zip keeps every junction and turns no
+/// facet over; `collapsed` counts the vertices that went (2). Materials, time and the
+/// bodies' reference and target volumes are kept.
+EdgeCollapseResult zip_slit(const Cluster& c, double min_length);
+
 /// Mesh upkeep for films narrower than their mesh (mesh/thin_film_remesh.cpp): every film
 /// whose mean width (2 area / perimeter) is below max_width, whose border is one loop of
 /// junction vertices and which has film vertices inside, gets the triangulation of its border

@@ -335,8 +335,9 @@ class Run {
         // a film vertex of three neighbours beside a line (joined to both its ends) folds
         // the film in the line's T1: where the forced T1s fail, such vertices go and the T1s
         // are forced again
-        static constexpr std::array<Upkeep, 7> for_facet = {
-            &Run::flip_edges,           &Run::relax_caps_once,      &Run::collapse_needles,
+        static constexpr std::array<Upkeep, 8> for_facet = {
+            &Run::zip_slits,            &Run::flip_edges,
+            &Run::relax_caps_once,      &Run::collapse_needles,
             &Run::remesh_thin,          &Run::force_line_transition, &Run::remove_valence_three,
             &Run::force_line_transition};
         const bool edge = e.kind == "collapsing edge";
@@ -395,6 +396,15 @@ class Run {
         const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
         EdgeCollapseResult collapsed = collapse_short_edges(c_, limit);
         return take_upkeep(collapsed.cluster, collapsed.collapsed, r_.collapsed_edges);
+    }
+
+    /// Mesh upkeep for a film's corner closed to a slit (a sliver along two lines of one
+    /// film): the quadruple point moves up the slit (zip_slit), for slits narrower than
+    /// collapse_edges' limit (which zips them too, where no edge collapses).
+    bool zip_slits() {
+        const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
+        EdgeCollapseResult zipped = zip_slit(c_, limit);
+        return take_upkeep(zipped.cluster, zipped.collapsed, r_.collapsed_edges);
     }
 
     /// Mesh upkeep for the films a transition makes grow: once the run (or a call before it,
