@@ -265,7 +265,7 @@ EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& 
     if (r.collapsed == 0) {
         if (criteria.min_length <= 0) return r;
         r = zip_squeezed_corner(c, criteria.min_length);
-        return r.cluster ? std::move(r) : zip_slit(c, criteria.min_length);
+        return r.cluster || !criteria.slits ? std::move(r) : zip_slit(c, criteria.min_length);
     }
     ClusterSpec& spec = collapser.spec();
     const std::vector<int> used = surgery::keep_used_vertices(spec, collapser.positions());

@@ -165,6 +165,10 @@ struct EdgeCollapseCriteria {
     /// joined to both its ends, breaks the link condition there, so the line could neither
     /// collapse nor make a T1 ("it would fold surface 689 over the point").
     bool valence_three = false;
+    /// Where nothing collapses, slits narrower than min_length are zipped (zip_slit).
+    /// minimize's upkeep leaves them: with them the 64-cell foam's minimize cycled through
+    /// 835 transitions in 128 iterations and stopped, against 411 in 300 without.
+    bool slits = true;
 };
 EdgeCollapseResult collapse_edges(const Cluster& c, const EdgeCollapseCriteria& criteria);
 

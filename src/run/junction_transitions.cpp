@@ -7,6 +7,8 @@
 #include "mesh/transitions.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 namespace froth {
@@ -97,7 +99,7 @@ void JunctionTransitions::carry_over(const std::vector<int>& original_body) {
     };
     renumber(line_sizes_), renumber(film_sizes_), renumber(products_[0]), renumber(products_[1]);
     renumber(contacts_);
-    made_[0].clear(), made_[1].clear(), refused_.clear();
+    made_[0].clear(), made_[1].clear(), refused_.clear(), refusals_.clear();
     bodies_ = static_cast<int>(original_body.size());
 }
 
@@ -105,7 +107,40 @@ void JunctionTransitions::new_look() {
     ++look_;
     for (auto it = contacts_.begin(); it != contacts_.end();)
         it = look_ - it->second >= kContactLooks ? contacts_.erase(it) : std::next(it);
-    made_[0].clear(), made_[1].clear(), refused_.clear();
+    made_[0].clear(), made_[1].clear(), refused_.clear(), refusals_.clear();
+}
+
+namespace {
+
+/// A hash of c's mesh (its vertices' positions and every surface's facets): the refusals hold
+/// only for the mesh they were met on, or one that a transition of this memory made from it.
+std::uint64_t mesh_fingerprint(const Cluster& c) {
+    std::uint64_t h = 1469598103934665603ull; // FNV-1a
+    const auto mix = [&](std::uint64_t x) { h = (h ^ x) * 1099511628211ull; };
+    for (const Vec3& x : c.positions())
+        for (int k = 0; k < 3; ++k) {
+            std::uint64_t bits;
+            std::memcpy(&bits, &x[k], sizeof bits);
+            mix(bits);
+        }
+    for (const Surface& s : c.surfaces()) {
+        mix(s.triangles.size());
+        for (const Tri& t : s.triangles)
+            for (int v : t) mix(static_cast<std::uint64_t>(v));
+    }
+    return h;
+}
+
+} // namespace
+
+void JunctionTransitions::forget_refusals_near(const std::vector<int>& cells) {
+    const auto near = [&](const std::vector<int>& other) {
+        int common = 0;
+        for (int k : other) common += std::count(cells.begin(), cells.end(), k) > 0;
+        return common >= 2;
+    };
+    for (auto it = refusals_.begin(); it != refusals_.end();)
+        it = near(std::get<2>(it->first)) ? refusals_.erase(it) : std::next(it);
 }
 
 std::string JunctionTransitions::undoes_recent(const std::vector<int>& pair, bool force) const {
@@ -176,6 +211,7 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
                                                  const std::vector<int>& original_body,
                                                  TransitionEvent& event) {
     if (c.quadruple_points().size() < 2u) return std::nullopt;
+    if (const std::uint64_t now = mesh_fingerprint(c); now != mesh_) refusals_.clear(), mesh_ = now;
     const double limit = fraction_ * mean_edge_length(c);
     const std::vector<Junction> small_films = films ? std::vector<Junction>{}
                                                     : junctions(c, true, original_body);
@@ -212,6 +248,11 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
         refused_ = std::string(what) + " could be made: " + why;
         return std::nullopt;
     }
+    const auto key = std::make_tuple(film, force, acted.cells);
+    if (const auto it = refusals_.find(key); it != refusals_.end() && it->second.size == acted.size) {
+        refused_ = it->second.why;
+        return std::nullopt;
+    }
     TransitionRecord record;
     try {
         // the product is at least twice the limit in size where the mesh lets it be
@@ -239,12 +280,15 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
             products_[!film][product_cells(acted.cells, film)] = -1;
         }
         contacts_[contact] = look_;
+        forget_refusals_near(acted.cells);
+        mesh_ = mesh_fingerprint(changed);
         return changed;
     } catch (const TopologyError& x) {
         std::string why = x.what();
         for (const std::string op : {"t1: ", "t1_inverse: ", "collapse_two_sided_film: "})
             if (why.rfind(op, 0) == 0) why.erase(0, op.size());
         refused_ = std::string(what) + " could be made: " + why;
+        refusals_[key] = {acted.size, refused_};
         return std::nullopt;
     }
 }

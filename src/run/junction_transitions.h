@@ -19,10 +19,12 @@
 #include "run/topology_watch.h"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace froth {
@@ -92,6 +94,9 @@ class JunctionTransitions {
     /// Why the transition of `acted` would undo one of the last kContactLooks looks (the same
     /// two cells gain or lose a film), or empty; with `force` always empty.
     std::string undoes_recent(const std::vector<int>& pair, bool force) const;
+    /// Forgets the refusals of the junctions that share two cells with `cells` (a
+    /// transition was made there).
+    void forget_refusals_near(const std::vector<int>& cells);
 
     double fraction_;
     bool fit_corners_;
@@ -110,6 +115,21 @@ class JunctionTransitions {
     // the pairs of cells (sorted) a film between which a transition made or removed, with
     // the look it did so in
     std::map<std::vector<int>, int> contacts_;
+    // the transitions the mesh refused in this look, by (film, forced, the junction's
+    // cells), with the junction's size then and why: one is not tried again in the look
+    // while its size is the same and no transition was made next to it (at two of its
+    // cells: a junction that shares a film with it). Each attempt rebuilds the whole
+    // cluster, and without this every call of make tried every refused one again (the
+    // 1000-cell minimize spent an hour so); retried after a transition beside it, one
+    // sometimes succeeds. They hold for the mesh they were met on (mesh_, a hash) or one a
+    // transition of this memory made from it: any other change (mesh upkeep, a step)
+    // forgets them all.
+    struct Refusal {
+        double size;
+        std::string why;
+    };
+    std::map<std::tuple<bool, bool, std::vector<int>>, Refusal> refusals_;
+    std::uint64_t mesh_ = 0;
     int look_ = 0;
     int bodies_ = -1; // carry_over: the number of bodies the memory is for
     std::string refused_;             // why a due transition could not be made in this look

@@ -72,6 +72,7 @@ int tidy_mesh(Cluster& c, TransitionMinimizeResult& out) {
     EdgeCollapseCriteria short_or_lone;
     short_or_lone.min_length = 0.05 * mean_edge_length(c);
     short_or_lone.valence_three = true;
+    short_or_lone.slits = false; // (EdgeCollapseCriteria::slits)
     EdgeCollapseResult collapsed = collapse_edges(c, short_or_lone);
     if (collapsed.cluster) c = std::move(*collapsed.cluster);
     EquiangulateResult flipped = equiangulate(c);
