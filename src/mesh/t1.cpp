@@ -60,6 +60,7 @@ class T1 {
     void split_fans(ClusterSpec& spec, const LineEnd& end);
     double mean_edge_at(int v) const;
     std::vector<Vec3> place_film(const ClusterSpec& spec);
+    std::vector<int> join_films_across(ClusterSpec& spec) const;
     double film_area(const std::vector<Vec3>& V) const;
 
     std::vector<surgery::MovedFacet> moved_; // the facets that took a new corner
@@ -253,15 +254,34 @@ void T1::split_fans(ClusterSpec& spec, const LineEnd& end) {
     }
 }
 
+/// Where the fourth cells are one, D (a cell that wraps around the line), no film D|D forms:
+/// A, B and C part and D's two sides meet through the gap. The film D|X at b joins D|X at a
+/// (X = A, B, C; the one at b goes, unless it is the same film), so each new corner's edges
+/// are inner edges of one film and the corner a point of the line (A, B, D) joined from both
+/// ends (and so on): the two quadruple points go. The surfaces that go, sorted.
+std::vector<int> T1::join_films_across(ClusterSpec& spec) const {
+    std::vector<int> removed;
+    for (int at_a : a_.films) {
+        const int x = cells_[at_a][0] == a_.cell ? cells_[at_a][1] : cells_[at_a][0];
+        for (int at_b : b_.films) {
+            const auto& cb = cells_[at_b];
+            if (at_b == at_a || !(cb[0] == x || cb[1] == x)) continue;
+            surgery::join_films(c_, spec, at_a, at_b, x >= 0 ? x : a_.cell);
+            removed.push_back(at_b);
+        }
+    }
+    std::sort(removed.begin(), removed.end());
+    if (std::adjacent_find(removed.begin(), removed.end()) != removed.end())
+        throw TopologyError(name_ + ": the films of the cell that meets itself across it do not "
+                            "pair up");
+    return removed;
+}
+
 Cluster T1::run(TransitionRecord* record) {
     check_line();
     a_ = end_at(seg_.front());
     b_ = end_at(seg_.back());
-    if (a_.cell == b_.cell)
-        throw TopologyError(name_ + ": the same cell (" +
-                            (a_.cell < 0 ? std::string("the outside")
-                                         : "body " + std::to_string(a_.cell + 1)) +
-                            ") meets both its ends; a film between it and itself cannot form");
+    const bool self = a_.cell == b_.cell; // the cell meets itself across the line
     unwrap_line();
     n_ = c_.n_vertices();
 
@@ -269,26 +289,35 @@ Cluster T1::run(TransitionRecord* record) {
     collapse_line_films(spec);
     split_fans(spec, a_);
     split_fans(spec, b_);
-    ClusterSpec::Surface film;
-    film.triangles.push_back({n_, n_ + 1, n_ + 2});
-    film.sigma = c_.surface(a_.films.front()).sigma;
-    if (spec.period) film.offsets.push_back({});
     const int new_film = static_cast<int>(spec.surfaces.size());
-    spec.surfaces.push_back(std::move(film));
-    for (int cell : {a_.cell, b_.cell})
-        if (cell >= 0) spec.bodies[cell].push_back(new_film);
+    std::vector<int> removed; // self: the films of D at b that joined those at a
+    if (self) {
+        removed = join_films_across(spec);
+    } else {
+        ClusterSpec::Surface film;
+        film.triangles.push_back({n_, n_ + 1, n_ + 2});
+        film.sigma = c_.surface(a_.films.front()).sigma;
+        if (spec.period) film.offsets.push_back({});
+        spec.surfaces.push_back(std::move(film));
+        for (int cell : {a_.cell, b_.cell})
+            if (cell >= 0) spec.bodies[cell].push_back(new_film);
+    }
 
     std::vector<Vec3> V = place_film(spec);
+    surgery::remove_surfaces(spec, removed);
     const std::vector<int> used = surgery::keep_used_vertices(spec, V);
     surgery::copy_vertex_lists(c_, [&](int v) { return used[v]; }, spec);
     Cluster r = surgery::rebuild(std::move(spec), name_, "the T1");
     for (int i = 0; i < 3; ++i)
-        if (r.vertex_junction_edges(used[n_ + i]).size() != 4)
-            throw TopologyError(name_ + ": the new corner " + std::to_string(i + 1) + " is not "
-                                "a quadruple point; refine the mesh around the line first");
-    carry_over(c_, r);
-    r.set_anisotropy(new_film, c_.surface(a_.films.front()).gamma);
-    r.set_mobility(new_film, c_.surface(a_.films.front()).beta);
+        if (r.vertex_junction_edges(used[n_ + i]).size() != (self ? 2u : 4u))
+            throw TopologyError(name_ + ": the new corner " + std::to_string(i + 1) + " is not " +
+                                (self ? "a point of one triple line" : "a quadruple point") +
+                                "; refine the mesh around the line first");
+    surgery::carry_over_without_surfaces(c_, removed, r);
+    if (!self) {
+        r.set_anisotropy(new_film, c_.surface(a_.films.front()).gamma);
+        r.set_mobility(new_film, c_.surface(a_.films.front()).beta);
+    }
 
     if (record) {
         const auto cell_name = [](int k) {
@@ -302,13 +331,16 @@ Cluster T1::run(TransitionRecord* record) {
         record->cells = {a_.cell, b_.cell};
         record->point = mid;
         record->removed_vertices = static_cast<int>(seg_.size());
-        record->removed_facets = c_.n_facets() + 7 - r.n_facets(); // a gap facet per fan, the film
+        // a gap facet per fan, and the film
+        record->removed_facets = c_.n_facets() + (self ? 6 : 7) - r.n_facets();
         record->where = "triple line " + std::to_string(shown_ + 1) + " (length " + fmt(length_) +
                         ", vertices " + std::to_string(seg_.front() + 1) + " .. " +
-                        std::to_string(seg_.back() + 1) + ") became a film of side " +
-                        fmt(side_) + " between " +
-                        cell_name(a_.cell) + " and " + cell_name(b_.cell) + " at " +
-                        point_text(mid);
+                        std::to_string(seg_.back() + 1) + ") became " +
+                        (self ? "a gap of side " + fmt(side_) + " through which " +
+                                    cell_name(a_.cell) + " meets itself"
+                              : "a film of side " + fmt(side_) + " between " +
+                                    cell_name(a_.cell) + " and " + cell_name(b_.cell)) +
+                        " at " + point_text(mid);
     }
     return r;
 }

@@ -69,7 +69,6 @@ class InverseT1 {
     int corner_towards(int q, int film, int w) const;
     std::vector<Vec3> place_line(const ClusterSpec& spec);
     void join_corner_films(ClusterSpec& spec);
-    void remove_surfaces(ClusterSpec& spec) const;
     Cluster finish(Cluster r) const;
     void check_ends(const Cluster& r, const std::vector<int>& used) const;
     std::string where() const;
@@ -297,54 +296,14 @@ void InverseT1::join_corner_films(ClusterSpec& spec) {
     const int keep = corner_film_.begin()->second, gone = corner_film_.rbegin()->second;
     if (keep == gone) return;
     // both lie between X and Y, one of which is a body: the sign it gives each says their ways
-    const int k = sides_[0].cell >= 0 ? sides_[0].cell : sides_[1].cell;
-    const auto sign_in_k = [&](int surface) {
-        for (const BodyFace& f : c_.bodies()[k].faces)
-            if (f.surface == surface) return f.sign;
-        return 0;
-    };
-    const bool flip = sign_in_k(keep) != sign_in_k(gone);
-    auto& from = spec.surfaces[gone];
-    auto& to = spec.surfaces[keep];
-    for (std::size_t f = 0; f < from.triangles.size(); ++f) {
-        Tri t = from.triangles[f];
-        if (flip) std::swap(t[1], t[2]);
-        to.triangles.push_back(t);
-        if (!to.offsets.empty()) {
-            auto o = from.offsets[f];
-            if (flip) std::swap(o[1], o[2]);
-            to.offsets.push_back(o);
-        }
-    }
+    surgery::join_films(c_, spec, keep, gone, sides_[0].cell >= 0 ? sides_[0].cell : sides_[1].cell);
     removed_.push_back(gone);
     std::sort(removed_.begin(), removed_.end());
 }
 
-/// The surfaces of removed_ go from the surfaces and the bodies; those after them move down.
-void InverseT1::remove_surfaces(ClusterSpec& spec) const {
-    for (auto it = removed_.rbegin(); it != removed_.rend(); ++it)
-        spec.surfaces.erase(spec.surfaces.begin() + *it);
-    const auto new_id = [&](int s) {
-        return s - static_cast<int>(std::lower_bound(removed_.begin(), removed_.end(), s) -
-                                    removed_.begin());
-    };
-    for (auto& body : spec.bodies) {
-        std::vector<int> kept;
-        for (int s : body)
-            if (!std::binary_search(removed_.begin(), removed_.end(), s)) kept.push_back(new_id(s));
-        body = std::move(kept);
-    }
-}
-
 /// The materials of the kept surfaces, the time and the bodies' volumes go over to r.
 Cluster InverseT1::finish(Cluster r) const {
-    for (int s = 0, old = 0; s < r.n_surfaces(); ++s, ++old) {
-        while (std::binary_search(removed_.begin(), removed_.end(), old)) ++old;
-        r.set_anisotropy(s, c_.surface(old).gamma);
-        r.set_mobility(s, c_.surface(old).beta);
-    }
-    r.set_time(c_.time());
-    r.set_volume_references(c_.initial_volumes(), c_.target_volumes());
+    surgery::carry_over_without_surfaces(c_, removed_, r);
     return r;
 }
 
@@ -396,7 +355,7 @@ Cluster InverseT1::run(TransitionRecord* record) {
     }
     std::vector<Vec3> V = place_line(spec);
     join_corner_films(spec);
-    remove_surfaces(spec);
+    surgery::remove_surfaces(spec, removed_);
     const std::vector<int> used = surgery::keep_used_vertices(spec, V);
     surgery::copy_vertex_lists(c_, [&](int v) { return used[v]; }, spec);
     Cluster r = finish(surgery::rebuild(std::move(spec), name_, "its collapse"));

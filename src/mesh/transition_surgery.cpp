@@ -66,6 +66,53 @@ void carry_over_without_body(const Cluster& c, int gone, const std::vector<int>&
     r.set_volume_references(std::move(initial), std::move(target));
 }
 
+void join_films(const Cluster& c, ClusterSpec& spec, int keep, int gone, int k) {
+    const auto sign_in_k = [&](int surface) {
+        for (const BodyFace& f : c.bodies()[k].faces)
+            if (f.surface == surface) return f.sign;
+        return 0;
+    };
+    const bool flip = sign_in_k(keep) != sign_in_k(gone);
+    const auto& from = spec.surfaces[gone];
+    auto& to = spec.surfaces[keep];
+    for (std::size_t f = 0; f < from.triangles.size(); ++f) {
+        Tri t = from.triangles[f];
+        if (flip) std::swap(t[1], t[2]);
+        to.triangles.push_back(t);
+        if (!to.offsets.empty()) {
+            auto o = from.offsets[f];
+            if (flip) std::swap(o[1], o[2]);
+            to.offsets.push_back(o);
+        }
+    }
+}
+
+void remove_surfaces(ClusterSpec& spec, const std::vector<int>& removed) {
+    for (auto it = removed.rbegin(); it != removed.rend(); ++it)
+        spec.surfaces.erase(spec.surfaces.begin() + *it);
+    const auto new_id = [&](int s) {
+        return s - static_cast<int>(std::lower_bound(removed.begin(), removed.end(), s) -
+                                    removed.begin());
+    };
+    for (auto& body : spec.bodies) {
+        std::vector<int> kept;
+        for (int s : body)
+            if (!std::binary_search(removed.begin(), removed.end(), s)) kept.push_back(new_id(s));
+        body = std::move(kept);
+    }
+}
+
+void carry_over_without_surfaces(const Cluster& c, const std::vector<int>& removed, Cluster& r) {
+    for (int s = 0, old = 0; s < r.n_surfaces(); ++s, ++old) {
+        while (std::binary_search(removed.begin(), removed.end(), old)) ++old;
+        if (old >= c.n_surfaces()) break; // surfaces r added
+        r.set_anisotropy(s, c.surface(old).gamma);
+        r.set_mobility(s, c.surface(old).beta);
+    }
+    r.set_time(c.time());
+    r.set_volume_references(c.initial_volumes(), c.target_volumes());
+}
+
 void check_one_fan(const std::vector<std::pair<int, int>>& link, int surface,
                    const std::string& what) {
     if (link.empty()) return;

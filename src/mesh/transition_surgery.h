@@ -99,6 +99,19 @@ bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
 bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vector<MovedFacet>& moved,
                  const std::vector<int>& movable, double max_shift);
 
+/// Surface `gone`'s facets join surface `keep` in spec (c's surface ids); both lie between
+/// body k and another cell, and where k gives them opposite signs gone's facets are turned to
+/// face keep's way. `gone` keeps its (now doubled) facets until remove_surfaces.
+void join_films(const Cluster& c, ClusterSpec& spec, int keep, int gone, int k);
+
+/// The surfaces `removed` (sorted) go from spec and its bodies; those after them move down.
+void remove_surfaces(ClusterSpec& spec, const std::vector<int>& removed);
+
+/// c's materials of the surfaces r keeps (all but `removed`, sorted, in order; surfaces r
+/// has after them are new and keep theirs), its time and the bodies' reference and target
+/// volumes, to r.
+void carry_over_without_surfaces(const Cluster& c, const std::vector<int>& removed, Cluster& r);
+
 /// c with its edge (a, b) split at a + t (b - a) (b unwrapped in a's frame), each facet at it
 /// into two in the same orientation (as split_long_edges); the new vertex is the last.
 /// \throw TopologyError if a and b share no edge, or it lies on a wall or wire.

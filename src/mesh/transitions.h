@@ -89,9 +89,15 @@ Cluster absorb_body(const Cluster& c, int body, int into = -1, TransitionRecord*
 /// and b between two of the new corners. The new film takes the tension, anisotropy and
 /// mobility of the first film of D at a, and is the last surface; bodies, their reference and
 /// target volumes are kept (the surgery moves a volume of order side^3).
+/// Where both ends touch the same fourth cell (D = E, a cell that wraps around the line), no
+/// film forms: the triangle is a gap through which D meets itself, D's film with X at b
+/// joins its film with X at a (X = A, B, C; the one at b goes unless they are one film, later
+/// surfaces move down), and each new corner is a point of the line (X, Y, D), which joins
+/// the lines from a and b (a loop where they were one): two quadruple points go.
 /// \throw InvalidInput for a line id out of range; TopologyError (naming the line and why,
 /// nothing changed) for a closed line, one whose ends are not two distinct quadruple points,
-/// whose ends touch the same fourth cell (D = E), which meets walls, fixed or curve vertices,
+/// where D = E and D's films at the ends do not pair up (D meets a cell twice at one end),
+/// which meets walls, fixed or curve vertices,
 /// whose films would be pinched or folded by the surgery (a mesh too coarse there), or where
 /// every side allowed turns a facet over.
 Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = nullptr,
