@@ -42,10 +42,10 @@ class T1 {
     /// shown: the line's id in the messages and the record (its id before splits that
     /// renumbered the lines), line if negative
     T1(const Cluster& c, int line, double min_side, double smallest_side, bool fit,
-       int shown = -1)
+       bool meets_itself, int shown = -1)
         : c_(c), line_(line), shown_(shown >= 0 ? shown : line), min_side_(min_side),
-          smallest_side_(smallest_side), fit_(fit), name_(line_name(shown_)),
-          cells_(surface_cells(c)) {}
+          smallest_side_(smallest_side), fit_(fit), meets_itself_(meets_itself),
+          name_(line_name(shown_)), cells_(surface_cells(c)) {}
 
     Cluster run(TransitionRecord* record);
 
@@ -69,6 +69,7 @@ class T1 {
     const int line_, shown_;
     const double min_side_, smallest_side_;
     const bool fit_; // corners may be moved off slivers (surgery::fit_corners)
+    const bool meets_itself_; // D = E is allowed (join_films_across)
     const std::string name_;
     const std::vector<std::array<int, 2>> cells_; // the bodies on each surface's sides
     std::vector<int> seg_;                 // the line's vertices, a first
@@ -282,6 +283,12 @@ Cluster T1::run(TransitionRecord* record) {
     a_ = end_at(seg_.front());
     b_ = end_at(seg_.back());
     const bool self = a_.cell == b_.cell; // the cell meets itself across the line
+    if (self && !meets_itself_)
+        throw TopologyError(name_ + ": the same cell (" +
+                            (a_.cell < 0 ? std::string("the outside")
+                                         : "body " + std::to_string(a_.cell + 1)) +
+                            ") meets both its ends; it may meet itself across the line only "
+                            "when forced");
     unwrap_line();
     n_ = c_.n_vertices();
 
@@ -348,24 +355,26 @@ Cluster T1::run(TransitionRecord* record) {
 } // namespace
 
 Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, double min_side,
-                        double smallest_side, bool fit_corners) {
+                        double smallest_side, bool fit_corners, bool meets_itself) {
     if (line < 0 || line >= static_cast<int>(c.triple_lines().size()))
         throw InvalidInput("t1: triple line " + std::to_string(line + 1) + " does not exist (the "
                            "cluster has " + std::to_string(c.triple_lines().size()) + ")");
     // a triangular film of one facet beside the line would be left without a facet: its
     // other sides are split first, and it becomes a lens of two facets
     std::optional<Cluster> split = split_films_emptied_by_t1(c, line);
-    if (!split) return T1(c, line, min_side, smallest_side, fit_corners).run(record);
+    if (!split) return T1(c, line, min_side, smallest_side, fit_corners, meets_itself).run(record);
     const std::vector<int>& vertices = c.triple_lines()[line].vertices; // ids the splits keep
     const auto& lines = split->triple_lines();
     for (std::size_t l = 0; l < lines.size(); ++l) {
         const std::vector<int>& w = lines[l].vertices;
         if (w != vertices && !std::equal(vertices.rbegin(), vertices.rend(), w.begin(), w.end()))
             continue;
-        return T1(*split, static_cast<int>(l), min_side, smallest_side, fit_corners, line)
+        return T1(*split, static_cast<int>(l), min_side, smallest_side, fit_corners, meets_itself,
+                  line)
             .run(record);
     }
-    return T1(c, line, min_side, smallest_side, fit_corners).run(record); // not found: why not
+    return T1(c, line, min_side, smallest_side, fit_corners, meets_itself)
+        .run(record); // not found: why not
 }
 
 } // namespace froth

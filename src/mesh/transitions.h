@@ -100,8 +100,12 @@ Cluster absorb_body(const Cluster& c, int body, int into = -1, TransitionRecord*
 /// which meets walls, fixed or curve vertices,
 /// whose films would be pinched or folded by the surgery (a mesh too coarse there), or where
 /// every side allowed turns a facet over.
+/// With `meets_itself` false, a line whose ends touch the same cell is refused too ("the same
+/// cell ... meets both its ends"): runs make that T1 only when forced (see
+/// run/junction_transitions.h).
 Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record = nullptr,
-                        double min_side = 0, double smallest_side = 0, bool fit_corners = true);
+                        double min_side = 0, double smallest_side = 0, bool fit_corners = true,
+                        bool meets_itself = true);
 
 /// The inverse T1 (the H -> I transition, Evolver's pop_tri_to_edge): surface `surface`, a
 /// film between cells D and E (D != E) bounded by three open triple lines between three
