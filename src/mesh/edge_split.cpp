@@ -136,6 +136,31 @@ std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line) {
                 if (!on_line.count(t[k]) || !on_line.count(t[(k + 1) % 3]))
                     sides.insert(std::minmax(t[k], t[(k + 1) % 3]));
     }
+    // a vertex w joined to a through a film of the fourth cell D there and to b through one of
+    // E's: after the T1 both films would have the edge from w to a new corner, which with the
+    // line's film beside it would be an edge of four films (the 200-grain network stopped so
+    // at t = 0.97, w a quadruple point at the far corner of a triangle whose third side, the
+    // line, was 1.3e-5 long); the edges (a, w) and (b, w) are split, and their midpoints part
+    // the fans
+    if (!tl.closed) {
+        const int a = tl.vertices.front(), b = tl.vertices.back();
+        const std::set<int> line_films(tl.surfaces.begin(), tl.surfaces.end());
+        const auto neighbours_off_line = [&](int end) {
+            std::set<int> out;
+            for (int si = 0; si < c.n_surfaces(); ++si) {
+                if (line_films.count(si)) continue;
+                for (const Tri& t : c.surface(si).triangles)
+                    for (int k = 0; k < 3; ++k)
+                        if (t[k] == end)
+                            for (int w : {t[(k + 1) % 3], t[(k + 2) % 3]})
+                                if (!on_line.count(w)) out.insert(w);
+            }
+            return out;
+        };
+        const std::set<int> at_a = neighbours_off_line(a), at_b = neighbours_off_line(b);
+        for (int w : at_a)
+            if (at_b.count(w)) sides.insert(std::minmax(a, w)), sides.insert(std::minmax(b, w));
+    }
     if (sides.empty()) return std::nullopt;
     // one pass splits an edge per facet: a facet's two sides take two
     std::optional<Cluster> out;
