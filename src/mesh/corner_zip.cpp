@@ -169,7 +169,7 @@ std::vector<Slit> find_slits(const Cluster& c, double min_length) {
             const JunctionEdge& j = c.junction_edges()[e];
             return j.a == q ? j.b : j.a;
         };
-        const auto unwrapped = [&](int v) { return c.position(v) + c.edge_shift(q, v); };
+        const auto unwrapped = [&](int v) -> Vec3 { return c.position(v) + c.edge_shift(q, v); };
         for (int ea : at_q)
             for (int eb : at_q) {
                 const JunctionEdge &ja = c.junction_edges()[ea], &jb = c.junction_edges()[eb];
