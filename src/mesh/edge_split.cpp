@@ -119,7 +119,8 @@ EdgeSplitResult split_long_edges(const Cluster& c, double max_length) {
     return split_edges_where(c, [&](int, int, double l) { return l > max_length; });
 }
 
-std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line) {
+std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line,
+                                                 bool part_common_neighbours) {
     const TripleLine& tl = c.triple_lines().at(line);
     const std::set<int> on_line(tl.vertices.begin(), tl.vertices.end());
     const auto corners_on_line = [&](const Tri& t) {
@@ -142,7 +143,7 @@ std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line) {
     // at t = 0.97, w a quadruple point at the far corner of a triangle whose third side, the
     // line, was 1.3e-5 long); the edges (a, w) and (b, w) are split, and their midpoints part
     // the fans
-    if (!tl.closed) {
+    if (part_common_neighbours && !tl.closed) {
         const int a = tl.vertices.front(), b = tl.vertices.back();
         const std::set<int> line_films(tl.surfaces.begin(), tl.surfaces.end());
         const auto neighbours_off_line = [&](int end) {

@@ -252,10 +252,12 @@ EdgeSplitResult split_long_edges(const Cluster& c, double max_length);
 /// would leave without a facet, get their other edges split at their midpoints (as
 /// split_long_edges; each such facet's two other sides, in two passes), so that the T1 leaves
 /// them a lens of two facets. None if no film is such. Vertex ids are kept (the midpoints
-/// come after them). Also split: the edges (a, w) and (b, w) from the line's ends to a vertex
-/// w joined to a through a film of the fourth cell at a and to b through one of the fourth
-/// cell at b (the T1 would give both films the edge from w to one new corner, an edge of four
-/// films).
-std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line);
+/// come after them). With part_common_neighbours, also the edges (a, w) and (b, w) from the
+/// line's ends to a vertex w joined to a through a film of the fourth cell at a and to b
+/// through one of the fourth cell at b (the T1 may give both films the edge from w to one new
+/// corner, an edge of four films; t1_line_to_film with fit_corners splits them where the T1
+/// fails without).
+std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line,
+                                                 bool part_common_neighbours = false);
 
 } // namespace froth
