@@ -10,7 +10,11 @@ local T = require("froth.test")
 
 local t = froth.triple_bubble{h = 0.12}
 local V0 = t:volumes()
-local r = t:minimize{}
+-- tol 2e-6: the residual's floor here depends on the machine's floating point (its BLAS
+-- kernels): on the machine of 2026-12-06's fourth stop minimize{} (tol 1e-6) stalled at
+-- 1.17e-6 for 1000 iterations with the same angles (also at c0b8980, where CI converged it in
+-- 277); with 2e-6 it stops after 138 there
+local r = t:minimize{tol = 2e-6}
 local q = t:report()
 print(("triple: %d iterations, %.2f s, films %.2f..%.2f, lines %.2f..%.2f, residual %.2e")
       :format(r.iterations, r.wall_s, q.angles.min, q.angles.max, q.quadruple_angles.min,
