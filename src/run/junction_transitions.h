@@ -120,8 +120,9 @@ class JunctionTransitions {
     // while its size is the same and no transition was made next to it (at two of its
     // cells: a junction that shares a film with it). Each attempt rebuilds the whole
     // cluster, and without this every call of make tried every refused one again (the
-    // 1000-cell minimize spent an hour so); retried after a transition beside it, one
-    // sometimes succeeds. They hold for the mesh they were met on (mesh_, a hash) or one a
+    // 1000-cell minimize spent an hour so); a transition beside one may change what the mesh
+    // allows there, so it is tried again then. They hold for the mesh they were met on
+    // (mesh_, a hash) or one a
     // transition of this memory made from it: any other change (mesh upkeep, a step)
     // forgets them all.
     struct Refusal {
