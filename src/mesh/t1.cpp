@@ -352,10 +352,6 @@ Cluster T1::run(TransitionRecord* record) {
     return r;
 }
 
-} // namespace
-
-namespace {
-
 /// The T1 of c's line `line` made on `split`, c with some edges split (vertex ids kept), where
 /// the line is found again by its vertices; on c itself without.
 Cluster t1_after_splits(const Cluster& c, int line, const std::optional<Cluster>& split,
