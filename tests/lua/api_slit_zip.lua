@@ -1,8 +1,8 @@
 -- c:collapse_edges zips a slit (mesh/corner_zip.cpp, zip_slit): a film's corner at a quadruple
 -- point q closed over a whole edge, the first vertex a of one line lying on the first edge
 -- (q, b) of another line of the same film. No edge is short there, so before zip_slit nothing
--- collapsed (grain networks stopped on such slits: 27 grains of seed 1 at t = 0.69, 200 at
--- t = 0.978). The zip splits (q, b) at a's foot and moves q up the slit to it: the lines and
+-- collapsed (grain networks stopped on such slits: 27 grains of seed 1 at t = 0.69). The zip
+-- splits (q, b) at a's foot and moves q up the slit to it: the lines and
 -- quadruple points stay, the line of a loses a vertex, q's two other lines reach along.
 local T = require("froth.test")
 
