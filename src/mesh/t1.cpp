@@ -385,8 +385,9 @@ Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, do
         return t1_after_splits(c, line, split, record, min_side, smallest_side, fit_corners,
                                meets_itself);
     };
+    const std::optional<Cluster> split = split_films_emptied_by_t1(c, line);
     try {
-        return t1_after(split_films_emptied_by_t1(c, line));
+        return t1_after(split);
     } catch (const TopologyError& refused) {
         // a vertex joined to both ends through the fourth cells' films can make an edge of
         // four films (the 200-grain network's stop at t = 0.970): those edges are split and
@@ -395,7 +396,9 @@ Cluster t1_line_to_film(const Cluster& c, int line, TransitionRecord* record, do
         // the T1s it then made
         if (!fit_corners) throw;
         std::optional<Cluster> parted = split_films_emptied_by_t1(c, line, true);
-        if (!parted) throw;
+        // (no common neighbour: the same splits, the same refusal)
+        const int before = split ? split->n_vertices() : c.n_vertices();
+        if (!parted || parted->n_vertices() == before) throw;
         try {
             return t1_after(parted);
         } catch (const TopologyError&) {

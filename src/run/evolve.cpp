@@ -390,11 +390,15 @@ class Run {
         return true;
     }
 
-    /// Mesh upkeep for a collapsing edge: the edges shorter than 2.5 min_edge_fraction of
-    /// the mean edge collapse (mesh/transitions.h); false if none could.
+    /// The upkeep's edge limit: 2.5 min_edge_fraction of the mean edge.
+    double collapse_limit() const {
+        return 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
+    }
+
+    /// Mesh upkeep for a collapsing edge: the edges shorter than collapse_limit() collapse
+    /// (mesh/transitions.h); false if none could.
     bool collapse_edges() {
-        const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
-        EdgeCollapseResult collapsed = collapse_short_edges(c_, limit);
+        EdgeCollapseResult collapsed = collapse_short_edges(c_, collapse_limit());
         return take_upkeep(collapsed.cluster, collapsed.collapsed, r_.collapsed_edges);
     }
 
@@ -402,8 +406,7 @@ class Run {
     /// film): the quadruple point moves up the slit (zip_slit), for slits narrower than
     /// collapse_edges' limit (which zips them too, where no edge collapses).
     bool zip_slits() {
-        const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
-        EdgeCollapseResult zipped = zip_slit(c_, limit);
+        EdgeCollapseResult zipped = zip_slit(c_, collapse_limit());
         return take_upkeep(zipped.cluster, zipped.collapsed, r_.collapsed_edges);
     }
 
@@ -475,8 +478,7 @@ class Run {
     /// tangent planes.
     bool relax_short_edges() {
         if (!facet_upkeep_allowed()) return false;
-        const double limit = 2.5 * o_.watch.min_edge_fraction * mean_edge_length(c_);
-        VertexRelaxResult relaxed = relax_short_edge_ends(c_, limit);
+        VertexRelaxResult relaxed = relax_short_edge_ends(c_, collapse_limit());
         return take_upkeep(relaxed.cluster, relaxed.moved, r_.relaxed_vertices);
     }
 

@@ -87,8 +87,9 @@ int tidy_mesh(Cluster& c, TransitionMinimizeResult& out) {
     return collapsed.collapsed + thin.collapsed;
 }
 
-/// True if more passes of the needles' collapse and the flips leave a sliver (sliver_left). A pass collapses only in disjoint neighbourhoods, so a sliver next to one that a pass
-/// took can be left for the next: the 1000-cell foam stopped after 16 iterations on a flat cap
+/// True if more passes of the needles' collapse and the flips leave a sliver (sliver_left).
+/// A pass collapses only in disjoint neighbourhoods, so a sliver next to one that a pass took
+/// can be left for the next: the 1000-cell foam stopped after 16 iterations on a flat cap
 /// of 0.06 degrees between two lines, which more passes removed (the smallest angle 0.059 ->
 /// 0.16 -> 0.98 degrees in two).
 bool sliver_left_after_passes(Cluster& c, TransitionMinimizeResult& out) {

@@ -93,7 +93,8 @@ T.assert_equal(step.stop_reason, "steps done", "the ring steps on")
 
 -- a cell that meets itself twice at one end (a tiny periodic foam) is refused, unchanged
 local f = froth.foam{n = 4, seed = 3, h = 0.3, lloyd = 5}
-local n_lines = #f:triple_lines()
+local n_lines, Xf = #f:triple_lines(), T.positions(f)
 T.check_error("the films of the cell that meets itself across it do not pair up", f.t1, f, 1)
 T.assert_equal(#f:triple_lines(), n_lines, "nothing changed")
+T.assert_true(T.same_positions(f, Xf), "no vertex moved")
 T.summary()
