@@ -2,7 +2,7 @@
 -- grains (the Voronoi cells of n random sites, relaxed by Lloyd's algorithm, each grain keeping
 -- its own volume as the flow changes it: no volume constraint), every film of tension and
 -- mobility 1, with the topological transitions that let it coarsen (inverse T1s of shrinking
--- triangular films, T1s of shrinking triple lines, collapses of two-sided films, pops of
+-- triangular films, T1s of shrinking triple lines, collapses of two-sided and disc films, pops of
 -- vanishing grains; docs/lua_api.md "Topological transitions").
 --
 -- After every step without a transition or mesh upkeep it checks each grain against the
@@ -36,24 +36,26 @@ print(("%d grains (seed %d, %d Lloyd steps): %d films, %d triple lines, %d quadr
       :format(info.bodies, opts.seed, opts.lloyd, info.surfaces, #c:triple_lines(),
               #c:quadruple_points(), info.vertices))
 
-local residuals, counts, clean_steps, deferred = {}, {}, 0, 0
+local residuals, counts, clean_steps, deferred, retried = {}, {}, 0, 0, 0
 local steps, stop = 0, "T reached"
 local t_end = c:time() + opts.T - 1e-12
 local clock = os.clock()
 while c:time() < t_end do
-  local before = c:grain_measures()
+  local before, t_before = c:grain_measures(), c:time()
   local r = c:evolve{flow = "mcf", tau = opts.tau, steps = 1, progress = false}
   steps = steps + 1
   for _, e in ipairs(r.events) do
     counts[e.kind] = (counts[e.kind] or 0) + 1
     print(("  t = %.4f  %s: %s"):format(e.t, e.kind, e.where))
   end
-  deferred = deferred + r.deferred
+  deferred, retried = deferred + r.deferred, retried + r.rejected_steps
   if r.stop_reason ~= "steps done" then stop = r.stop_reason; break end
   local upkeep = r.split_edges + r.collapsed_edges + r.flipped_edges
   if #r.events == 0 and upkeep == 0 then
     clean_steps = clean_steps + 1
-    for _, x in ipairs(measure.macpherson_srolovitz(before, c:grain_measures(), opts.tau)) do
+    -- the step's own length: after a retried step evolve's steps are shorter than tau
+    local dt = c:time() - t_before
+    for _, x in ipairs(measure.macpherson_srolovitz(before, c:grain_measures(), dt)) do
       residuals[#residuals + 1] = x
     end
   end
@@ -61,7 +63,8 @@ while c:time() < t_end do
     print(("step %4d  t = %.4f  energy %.6f  grains %d  transitions so far %d")
           :format(steps, c:time(), c:energy(), c:info().bodies,
                   (counts["T1"] or 0) + (counts["inverse T1"] or 0) + (counts["two-sided film"] or 0)
-                  + (counts["pop body"] or 0) + (counts["absorb body"] or 0)))
+                  + (counts["disc film"] or 0) + (counts["pop body"] or 0)
+                  + (counts["absorb body"] or 0)))
   end
 end
 local seconds = os.clock() - clock
@@ -72,7 +75,8 @@ table.sort(made)
 print(("%d steps to t = %.4f in %.1f s: %s; %d grains left"):format(steps, c:time(), seconds,
       #made > 0 and table.concat(made, ", ") or "no transitions", c:info().bodies))
 print("stop: " .. stop)
-print(("%d steps went on past a sliver the upkeep left (deferred)"):format(deferred))
+print(("%d steps went on past a sliver the upkeep left (deferred), %d were retried shorter")
+      :format(deferred, retried))
 table.sort(residuals)
 if #residuals > 0 then
   local function quantile(q) return residuals[math.max(1, math.ceil(q * #residuals))] end

@@ -53,6 +53,14 @@ end
 --- Relative difference |a - b| / |b|.
 function M.rel(a, b) return math.abs(a - b) / math.abs(b) end
 
+--- A fresh temporary path ending in `suffix`: os.tmpname's name, whose empty file it removes
+--- (os.tmpname creates it, and a test that writes name .. suffix would leave it behind).
+function M.temp_path(suffix)
+  local name = os.tmpname()
+  os.remove(name)
+  return name .. (suffix or "")
+end
+
 --- The positions of all vertices of c, for checking that a failed call changed nothing.
 function M.positions(c)
   local X = {}

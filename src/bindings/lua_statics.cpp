@@ -245,8 +245,9 @@ int l_t1(lua_State* L) {
     });
 }
 
-/// c:t1_inverse(surface) and c:collapse_two_sided_film(surface) -> {surface, cells, point,
-/// where, removed_vertices, energy_before, energy_after}: a film between two cells goes.
+/// c:t1_inverse(surface), c:collapse_two_sided_film(surface), c:collapse_disc_film(surface) ->
+/// {surface, cells, point, where, removed_vertices, energy_before, energy_after}: a film
+/// between two cells goes.
 template <class Collapse>
 int film_collapse(lua_State* L, const char* op, Collapse collapse) {
     ClusterHandle& h = self(L);
@@ -275,6 +276,14 @@ int l_collapse_two_sided_film(lua_State* L) {
                          [](const Cluster& c, int film, TransitionRecord* r) {
                              return collapse_two_sided_film(c, film, r);
                          });
+}
+
+/// c:collapse_disc_film(surface): a disc bounded by one closed triple line goes: its loop
+/// collapses, or where the mesh refuses that, caps close it.
+int l_collapse_disc_film(lua_State* L) {
+    return film_collapse(L, "collapse_disc_film", [](const Cluster& c, int film, TransitionRecord* r) {
+        return close_disc_film(c, film, r);
+    });
 }
 
 /// The one length option of c:split_edges, positive and finite.
@@ -397,6 +406,7 @@ const luaL_Reg methods[] = {
     {"t1", l_t1},
     {"t1_inverse", l_t1_inverse},
     {"collapse_two_sided_film", l_collapse_two_sided_film},
+    {"collapse_disc_film", l_collapse_disc_film},
     {"collapse_edges", l_collapse_edges},
     {"split_edges", l_split_edges},
     {"relax_flat_corners", l_relax_flat_corners},

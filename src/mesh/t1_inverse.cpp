@@ -18,6 +18,11 @@
 // films at q_1 and q_2 (or the one, met twice) become one film across it, and a and b are
 // points of the lines (D, X, Y) and (E, X, Y), which run on through them. D and E no longer
 // touch there; two quadruple points go.
+//
+// A disc film (F bounded by one closed triple line l_X, a contact of D and E through a hole in
+// the films of X; what a T1 of a cell that meets itself leaves behind) collapses the same way
+// with one side and no corners: l_X becomes a in D|X and b in E|X, points inside those films,
+// which close over the hole. D and E no longer touch there, and X fills the gap between them.
 #include "mesh/transitions.h"
 
 #include "core/errors.h"
@@ -26,6 +31,7 @@
 #include "mesh/walls.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -49,20 +55,27 @@ struct Side {
 
 class InverseT1 {
   public:
-    /// sides: 3 for the inverse T1 of a triangular film, 2 for the collapse of a lens.
+    /// sides: 3 for the inverse T1 of a triangular film, 2 for the collapse of a lens, 1 for
+    /// that of a disc.
     InverseT1(const Cluster& c, int film, int sides, double min_length, double smallest_length,
               bool fit)
         : c_(c), film_(film), n_sides_(sides), min_length_(min_length),
           smallest_length_(smallest_length), fit_(fit),
-          name_(std::string(sides == 3 ? "t1_inverse" : "collapse_two_sided_film") +
-                ": surface " + std::to_string(film + 1)),
+          name_(std::string(operation(sides)) + ": surface " + std::to_string(film + 1)),
           cells_(surface_cells(c)) {}
+
+    static const char* operation(int sides) {
+        return sides == 3 ? "t1_inverse"
+               : sides == 2 ? "collapse_two_sided_film"
+                            : "collapse_disc_film";
+    }
 
     Cluster run(TransitionRecord* record);
 
   private:
     void check_film();
     void find_sides();
+    std::string shape_wanted() const;
     Side side_of(int line) const;
     void find_corner_films();
     void unwrap_film();
@@ -140,23 +153,27 @@ Side InverseT1::side_of(int line) const {
     return side;
 }
 
-/// The three lines around F, each open, between quadruple points, three corners in all.
+/// The three lines around F, each open, between quadruple points, three corners in all (two
+/// for a lens); for a disc the one closed line.
 void InverseT1::find_sides() {
+    static const char* const number[] = {"", "one", "two", "three"};
     const auto& lines = c_.triple_lines();
     for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
         const auto& fs = lines[l].surfaces;
         if (std::find(fs.begin(), fs.end(), film_) == fs.end()) continue;
-        if (lines[l].closed)
-            throw TopologyError(name_ + " is bounded by the closed triple line " +
-                                std::to_string(l + 1) + "; only a triangle of three lines "
-                                "between quadruple points collapses");
+        if (lines[l].closed != (n_sides_ == 1))
+            throw TopologyError(name_ + " is bounded by the " +
+                                (lines[l].closed ? "closed" : "open") + " triple line " +
+                                std::to_string(l + 1) + "; " +
+                                (n_sides_ == 1 ? shape_wanted()
+                                               : "only a triangle of three lines between "
+                                                 "quadruple points collapses"));
         sides_.push_back(side_of(l));
     }
     if (static_cast<int>(sides_.size()) != n_sides_)
         throw TopologyError(name_ + " has " + std::to_string(sides_.size()) + " triple lines "
-                            "on its border, not " + (n_sides_ == 3 ? "three; only a triangular "
-                            "film collapses to a line" : "two; only a two-sided film (a lens) "
-                            "collapses this way"));
+                            "on its border, not " + number[n_sides_] + "; " + shape_wanted());
+    if (n_sides_ == 1) return; // a loop has no corners
     std::map<int, int> ends;
     std::set<int> cells;
     for (const Side& side : sides_) {
@@ -176,8 +193,16 @@ void InverseT1::find_sides() {
                             body_name(d_cell_) + " and " + body_name(e_cell_));
 }
 
+/// What this collapse takes, for the messages.
+std::string InverseT1::shape_wanted() const {
+    return n_sides_ == 3   ? "only a triangular film collapses to a line"
+           : n_sides_ == 2 ? "only a two-sided film (a lens) collapses this way"
+                           : "only a disc bounded by one closed triple line collapses this way";
+}
+
 /// At each corner q_XY, the one film there that is neither F nor a side's: X|Y.
 void InverseT1::find_corner_films() {
+    if (n_sides_ == 1) return;
     std::set<int> side_films{film_};
     for (const Side& side : sides_) side_films.insert({side.film_d, side.film_e});
     for (const Side& side : sides_) {
@@ -236,8 +261,10 @@ void InverseT1::unwrap_film() {
     }
     into_d_ = -out_of_d * area.normalized();
     for (Side& side : sides_) {
-        const auto& v = c_.triple_lines()[side.line].vertices;
+        const TripleLine& tl = c_.triple_lines()[side.line];
+        const auto& v = tl.vertices;
         for (std::size_t i = 1; i < v.size(); ++i) side.length += (u_[v[i]] - u_[v[i - 1]]).norm();
+        if (tl.closed) side.length += (u_[v.front()] - u_[v.back()]).norm();
     }
 }
 
@@ -264,8 +291,8 @@ int InverseT1::corner_towards(int q, int film, int w) const {
 /// and b are first moved off the slivers (surgery::fit_corners, at most the length) so long as
 /// they stay half the length apart.
 std::vector<Vec3> InverseT1::place_line(const ClusterSpec& spec) {
-    double mean = 0;
-    for (const Side& side : sides_) mean += side.length / n_sides_;
+    double mean = 0; // a disc's: its diameter, the loop's length over pi
+    for (const Side& side : sides_) mean += side.length / (n_sides_ == 1 ? M_PI : n_sides_);
     int turned = -1;
     double length = std::max(mean, min_length_);
     for (int halvings = 0; halvings <= 10; ++halvings, length *= 0.5) {
@@ -308,14 +335,15 @@ Cluster InverseT1::finish(Cluster r) const {
 }
 
 /// a and b are quadruple points after an inverse T1, points of one triple line each after a
-/// lens's collapse.
+/// lens's collapse, points inside one film each after a disc's.
 void InverseT1::check_ends(const Cluster& r, const std::vector<int>& used) const {
-    const std::size_t lines = n_sides_ == 3 ? 4 : 2;
+    const std::size_t lines = n_sides_ == 3 ? 4 : n_sides_ == 2 ? 2 : 0;
+    const char* what = n_sides_ == 3   ? "an end of the new line is not a quadruple point"
+                       : n_sides_ == 2 ? "a new point is not on one triple line"
+                                       : "a new point is not inside one film";
     for (int p : {n_, n_ + 1})
         if (r.vertex_junction_edges(used[p]).size() != lines)
-            throw TopologyError(name_ + ": " + (n_sides_ == 3 ? "an end of the new line is not "
-                                "a quadruple point" : "a new point is not on one triple line") +
-                                "; refine the mesh around the film first");
+            throw TopologyError(name_ + ": " + what + "; refine the mesh around the film first");
 }
 
 std::string InverseT1::where() const {
@@ -330,6 +358,9 @@ std::string InverseT1::where() const {
                              " and " + body_name(e_cell_) + " (triple lines " + lines + ")";
     if (n_sides_ == 2)
         return "two-sided film " + film + " collapsed: " + cells + " meet across it at " +
+               point_text(centre_);
+    if (n_sides_ == 1)
+        return "disc film " + film + " collapsed: " + cells + " closes between them at " +
                point_text(centre_);
     return "triangular film " + film + " became a triple line of length " + fmt(length_) +
            " between " + cells + " at " + point_text(centre_);
@@ -361,14 +392,15 @@ Cluster InverseT1::run(TransitionRecord* record) {
     Cluster r = finish(surgery::rebuild(std::move(spec), name_, "its collapse"));
     check_ends(r, used);
     if (record) {
-        record->kind = n_sides_ == 3 ? "inverse T1" : "two-sided film";
+        record->kind = n_sides_ == 3 ? "inverse T1" : n_sides_ == 2 ? "two-sided film" : "disc film";
         record->fitted = fitted_;
         record->size = length_;
         record->film = film_;
         record->cells = {d_cell_, e_cell_};
         record->point = centre_;
         record->removed_vertices = c_.n_vertices() + 2 - r.n_vertices();
-        record->removed_facets = c_.n_facets() + n_sides_ - r.n_facets(); // a gap facet per corner
+        const int corners = n_sides_ == 1 ? 0 : n_sides_; // a gap facet per corner
+        record->removed_facets = c_.n_facets() + corners - r.n_facets();
         record->where = where();
     }
     return r;
@@ -391,6 +423,40 @@ Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord*
                            " does not exist (the cluster has " + std::to_string(c.n_surfaces()) +
                            ")");
     return InverseT1(c, surface, 2, min_length, 0, fit_corners).run(record);
+}
+
+Cluster collapse_disc_film(const Cluster& c, int surface, TransitionRecord* record,
+                           double min_length, bool fit_corners, bool by_caps) {
+    if (surface < 0 || surface >= c.n_surfaces())
+        throw InvalidInput("collapse_disc_film: surface " + std::to_string(surface + 1) +
+                           " does not exist (the cluster has " + std::to_string(c.n_surfaces()) +
+                           ")");
+    if (by_caps) return surgery::cap_disc_film(c, surface, record);
+    return InverseT1(c, surface, 1, min_length, 0, fit_corners).run(record);
+}
+
+Cluster close_disc_film(const Cluster& c, int surface, TransitionRecord* record,
+                        bool fit_corners, const DiscCheck& check) {
+    TransitionRecord collapse_record, caps_record;
+    const auto made = [&](Cluster r, TransitionRecord& made_record) {
+        if (check) check(r, made_record);
+        if (record) *record = made_record;
+        return r;
+    };
+    try {
+        return made(collapse_disc_film(c, surface, &collapse_record, 0, fit_corners),
+                    collapse_record);
+    } catch (const TopologyError& collapse) {
+        try {
+            return made(collapse_disc_film(c, surface, &caps_record, 0, fit_corners, true),
+                        caps_record);
+        } catch (const TopologyError& caps) {
+            std::string why = caps.what();
+            const std::string name = "collapse_disc_film: ";
+            if (why.rfind(name, 0) == 0) why.erase(0, name.size());
+            throw TopologyError(std::string(collapse.what()) + "; nor can caps close it: " + why);
+        }
+    }
 }
 
 } // namespace froth

@@ -117,4 +117,8 @@ void carry_over_without_surfaces(const Cluster& c, const std::vector<int>& remov
 /// \throw TopologyError if a and b share no edge, or it lies on a wall or wire.
 Cluster split_edge(const Cluster& c, int a, int b, double t);
 
+/// The disc film `surface` of c closed by caps (disc_caps.cpp): collapse_disc_film with
+/// by_caps. \throw TopologyError as collapse_disc_film.
+Cluster cap_disc_film(const Cluster& c, int surface, TransitionRecord* record);
+
 } // namespace froth::surgery

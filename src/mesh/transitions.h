@@ -6,6 +6,7 @@
 
 #include "mesh/cluster.h"
 
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -14,7 +15,8 @@ namespace froth {
 
 /// What a transition did, for event lists and messages.
 struct TransitionRecord {
-    std::string kind;    ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film"
+    std::string kind;    ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film",
+                         ///< "disc film"
     std::string where;   ///< for people: "body 3 (volume 1e-05, 4 neighbouring cells) at (x, y, z)"
     int body = -1;       ///< pop, absorb: the body that vanished (0-based, its id before)
     int line = -1;       ///< T1: the triple line that became a film (0-based, before)
@@ -30,6 +32,8 @@ struct TransitionRecord {
     /// (surgery::fit_corners), so the new junction may cross a film that no moved facet is
     /// part of; the caller decides whether to test for crossings
     bool fitted = false;
+    /// disc film: closed by caps (collapse_disc_film with by_caps), which may cross a film
+    bool capped = false;
 };
 
 /// The bodies on the two sides of each surface (-1: the outside or nothing; a film between a
@@ -144,6 +148,35 @@ Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record 
 /// triple lines between two quadruple points with distinct third cells.
 Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord* record = nullptr,
                                 double min_length = 0, bool fit_corners = true);
+
+/// The collapse of a disc film (a contact of two cells through a hole in a third's films, as a
+/// T1 of a cell that meets itself leaves one): surface `surface`, between cells D and E,
+/// bounded by one closed triple line (D, E, X), goes. The line becomes two points a (towards D)
+/// and b (towards E) on its normal through its centre, the loop's length over pi apart (or
+/// min_length; halved while a facet would turn over, at most ten times); the film D|X closes
+/// over the hole at a, E|X at b, and X fills the gap between them. a and b are points inside
+/// those films. Surfaces after `surface` move down; bodies, their reference and target volumes
+/// are kept.
+/// With `by_caps` the loop does not move: D|X closes over it with a fan of new facets to a, and
+/// E|X, its loop vertices replaced by copies moved towards E by a quarter of the loop's radius
+/// (halved while a facet would turn), with a fan to b; a and b half the radius from the centre.
+/// The record then has `capped`: the caps may cross another film, which the caller tests.
+/// \throw InvalidInput for a surface id out of range; TopologyError (naming the surface and
+/// why, nothing changed) for a film between a cell and itself, one that is not a disk bounded
+/// by one closed triple line along a third cell, whose collapse would pinch or fold a film, or
+/// where every length allowed turns a facet over.
+Cluster collapse_disc_film(const Cluster& c, int surface, TransitionRecord* record = nullptr,
+                           double min_length = 0, bool fit_corners = true, bool by_caps = false);
+
+/// A test of a closed disc (the new cluster and its record) that throws TopologyError to refuse
+/// it (evolve's crossing test).
+using DiscCheck = std::function<void(const Cluster&, const TransitionRecord&)>;
+
+/// A disc film closed as collapse_disc_film does, or where that is refused (or `check` refuses
+/// it) by caps, tested by `check` too. \throw InvalidInput for a surface out of range;
+/// TopologyError with both reasons ("...; nor can caps close it: ...").
+Cluster close_disc_film(const Cluster& c, int surface, TransitionRecord* record = nullptr,
+                        bool fit_corners = true, const DiscCheck& check = {});
 
 /// Mesh upkeep: what collapse_short_edges made.
 struct EdgeCollapseResult {

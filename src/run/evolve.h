@@ -86,7 +86,8 @@ struct EvolveResult {
     double solve_seconds = 0;        ///< summed over the steps
     int factorizations = 0;          ///< numeric factorisations made (the rest reused one)
     double max_energy_increase = 0;  ///< largest relative energy increase of any step (0 if none)
-    int rejected_steps = 0;          ///< adaptive: steps retried shorter (error or failure)
+    /// steps retried shorter: adaptive (error or failure), or with transitions (Run::retry)
+    int rejected_steps = 0;
     /// "T reached", "steps done", "on_step", "interrupted", "topology: <what, where, when>", or
     /// "no convergence: <...>" (the r > 1 fixed-point iteration of a step failed)
     std::string stop_reason;
@@ -110,6 +111,7 @@ struct TransitionMemory {
     std::optional<JunctionTransitions> junctions; ///< none: no call with transitions yet
     double longest_edge = 0;
     bool transitions_made = false;
+    double tau_scale = 1; ///< the next step over tau, below 1 after a retried step
 };
 
 /// A step that fails geometrically (GeometryError, SolverError: a collapsing facet, a singular

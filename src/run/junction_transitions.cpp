@@ -166,7 +166,9 @@ std::vector<Junction> JunctionTransitions::due(const Cluster& c, bool films, dou
     std::vector<Junction> out;
     for (Junction& j : junctions(c, films, original_body)) {
         const bool flat = films && j.width < kThinFilm * limit; // due shrinking or not
-        if (!(j.size < (films ? j.sides() : 1) * limit) && !flat) continue;
+        // a disc's perimeter against a triangle's: both are due about a limit across
+        const int sides = !films ? 1 : j.sides() == 1 ? 3 : j.sides();
+        if (!(j.size < sides * limit) && !flat) continue;
         // a product of this look's or an earlier transition, unless forced (an edge is
         // collapsing: the run stops if nothing clears it)
         if (!force && (made_[films].count(j.cells) || protected_product(j, films))) continue;
@@ -236,13 +238,51 @@ std::optional<Cluster> JunctionTransitions::make(const Cluster& c, bool films, b
     return std::nullopt;
 }
 
+namespace {
+
+/// Throws where the transition's record says its new vertices may cross another film (moved
+/// off slivers, or caps) and they do: the facets around the transition, out to a few edges
+/// beyond what it moved.
+void check_crossings(const Cluster& c, const Cluster& changed, const TransitionRecord& record) {
+    if (!record.fitted && !record.capped) return;
+    const Region around{record.point, 4 * record.size + 3 * mean_edge_length(c)};
+    if (!find_self_intersections(changed, 1, &around).empty())
+        throw TopologyError(record.capped ? "its caps would cross a film"
+                                          : "its new corners, moved off the slivers beside it, "
+                                            "would cross a film");
+}
+
+} // namespace
+
+Cluster JunctionTransitions::transition_of(const Cluster& c, const Junction& acted, bool film,
+                                           bool force, double limit,
+                                           TransitionRecord& record) const {
+    // the product is at least twice the limit in size where the mesh lets it be
+    const int id = acted.id;
+    if (film && acted.sides() == 1) // collapsed, or else capped, without crossings
+        return close_disc_film(c, id, &record, fit_corners_,
+                               [&c](const Cluster& r, const TransitionRecord& made) {
+                                   check_crossings(c, r, made);
+                               });
+    // a cell meets itself across a line only where the run would stop otherwise: made
+    // when due, in 3 of 8 small networks, each run stopped within 0.05 in time after it,
+    // on a T1 refused for an edge of four films (they had gone further without it)
+    Cluster changed = !film ? t1_line_to_film(c, id, &record, 2 * limit, 0, fit_corners_, force)
+                      : acted.sides() == 3
+                          ? t1_film_to_line(c, id, &record, 2 * limit, 0, fit_corners_)
+                          : collapse_two_sided_film(c, id, &record, 0, fit_corners_);
+    check_crossings(c, changed, record);
+    return changed;
+}
+
 std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Junction& acted,
                                                      bool film, bool force, double limit,
                                                      const std::vector<int>& original_body,
                                                      TransitionEvent& event) {
     const char* what = !film                ? "no T1"
                        : acted.sides() == 3 ? "no inverse T1"
-                                            : "no collapse of a two-sided film";
+                       : acted.sides() == 2 ? "no collapse of a two-sided film"
+                                            : "no collapse of a disc film";
     const std::vector<int> contact = contact_of(acted, film);
     if (std::string why = undoes_recent(contact, force); !why.empty()) {
         refused_ = std::string(what) + " could be made: " + why;
@@ -255,27 +295,10 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
     }
     TransitionRecord record;
     try {
-        // the product is at least twice the limit in size where the mesh lets it be
-        const int id = acted.id;
-        // a cell meets itself across a line only where the run would stop otherwise: made
-        // when due, in 3 of 8 small networks, each run stopped within 0.05 in time after it,
-        // on a T1 refused for an edge of four films (they had gone further without it)
-        Cluster changed = !film ? t1_line_to_film(c, id, &record, 2 * limit, 0, fit_corners_,
-                                                  force)
-                          : acted.sides() == 3
-                              ? t1_film_to_line(c, id, &record, 2 * limit, 0, fit_corners_)
-                              : collapse_two_sided_film(c, id, &record, 0, fit_corners_);
-        if (record.fitted) {
-            // corners moved off slivers may have been moved through another film: the facets
-            // around the transition, out to a few edges beyond what it moved
-            const Region around{record.point, 4 * record.size + 3 * mean_edge_length(c)};
-            if (!find_self_intersections(changed, 1, &around).empty())
-                throw TopologyError("its new corners, moved off the slivers beside it, would "
-                                    "cross a film");
-        }
+        Cluster changed = transition_of(c, acted, film, force, limit, record);
         event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),
                                 energy(changed)};
-        (film ? event.film : event.line) = id;
+        (film ? event.film : event.line) = acted.id;
         event.cells = record.cells;
         for (int& k : event.cells)
             if (k >= 0) k = original_body[k];
@@ -289,7 +312,8 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
         return changed;
     } catch (const TopologyError& x) {
         std::string why = x.what();
-        for (const std::string op : {"t1: ", "t1_inverse: ", "collapse_two_sided_film: "})
+        for (const std::string op :
+             {"t1: ", "t1_inverse: ", "collapse_two_sided_film: ", "collapse_disc_film: "})
             if (why.rfind(op, 0) == 0) why.erase(0, op.size());
         refused_ = std::string(what) + " could be made: " + why;
         refusals_[key] = {acted.size, refused_};

@@ -29,6 +29,8 @@
 
 namespace froth {
 
+struct TransitionRecord; // mesh/transitions.h
+
 /// A topological transition a run made.
 struct TransitionEvent {
     std::string kind;  ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film"
@@ -85,6 +87,10 @@ class JunctionTransitions {
                                     const std::vector<int>& original_body) const;
     std::vector<Junction> due(const Cluster& c, bool films, double limit, bool force,
                               const std::vector<int>& original_body) const;
+    /// The transition of `acted` (a film's with `film`, else a line's T1) on c, tested for
+    /// crossings where it moved corners off slivers or capped a disc. \throw TopologyError
+    Cluster transition_of(const Cluster& c, const Junction& acted, bool film, bool force,
+                          double limit, TransitionRecord& record) const;
     /// The transition of `acted` (a film's with `film`, else a line's T1), or none (then
     /// refused_ says why).
     std::optional<Cluster> try_make(const Cluster& c, const Junction& acted, bool film,

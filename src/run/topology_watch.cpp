@@ -120,10 +120,12 @@ bool between_quadruple_points(const Cluster& c, const TripleLine& tl) {
            quadruple(tl.vertices.front()) && quadruple(tl.vertices.back());
 }
 
+/// A line's length, a closed one's with its closing edge.
 double line_length(const Cluster& c, const TripleLine& tl) {
     double length = 0;
-    for (std::size_t i = 1; i < tl.vertices.size(); ++i) {
-        const int a = tl.vertices[i - 1], b = tl.vertices[i];
+    const std::size_t n = tl.vertices.size();
+    for (std::size_t i = tl.closed ? 0 : 1; i < n; ++i) {
+        const int a = tl.vertices[(i + n - 1) % n], b = tl.vertices[i];
         length += (c.position(b) - c.position(a) + c.edge_shift(a, b)).norm();
     }
     return length;
@@ -177,12 +179,13 @@ std::vector<Junction> collapsible_films(const Cluster& c) {
         for (int s : lines[l].surfaces) border[s].push_back(l);
     for (int s = 0; s < c.n_surfaces(); ++s) {
         const std::size_t n = border[s].size();
-        if ((n != 2 && n != 3) || cells[s][0] == cells[s][1]) continue;
+        const bool disc = n == 1 && lines[border[s][0]].closed;
+        if ((n != 2 && n != 3 && !disc) || cells[s][0] == cells[s][1]) continue;
         Junction j{s, 0, {std::min(cells[s][0], cells[s][1]), std::max(cells[s][0], cells[s][1])}};
         std::set<int> sides;
         bool ok = true;
         for (int l : border[s]) {
-            ok = ok && between_quadruple_points(c, lines[l]);
+            ok = ok && (disc || between_quadruple_points(c, lines[l]));
             j.size += line_length(c, lines[l]);
             for (int cell : cells_around(cells, lines[l]))
                 if (cell != j.cells[0] && cell != j.cells[1]) sides.insert(cell);

@@ -52,11 +52,12 @@ struct EdgeLengths {
 EdgeLengths edge_lengths(const Cluster& c);
 double mean_edge_length(const Cluster& c); ///< edge_lengths(c).mean
 
-/// Where a T1, an inverse T1 or a lens's collapse can act: a triple line between two
+/// Where a T1, an inverse T1 or a lens's or disc's collapse can act: a triple line between two
 /// distinct quadruple points, a triangular film (bounded by three such lines, between two
-/// cells, with three other cells along its sides) or a two-sided film (a lens: two such lines
-/// between the same two quadruple points, two other cells along them). The cells name it
-/// through transitions of other junctions, where its id changes.
+/// cells, with three other cells along its sides), a two-sided film (a lens: two such lines
+/// between the same two quadruple points, two other cells along them) or a disc film (bounded
+/// by one closed triple line, one other cell along it). The cells name it through transitions
+/// of other junctions, where its id changes.
 struct Junction {
     int id = -1;       ///< the triple line's or the surface's (0-based)
     double size = 0;   ///< the line's length, the film's perimeter
@@ -69,7 +70,7 @@ struct Junction {
     int sides() const { return static_cast<int>(cells.size()) - 2; }
 };
 std::vector<Junction> quadruple_lines(const Cluster& c);
-/// The triangular and the two-sided films.
+/// The triangular, the two-sided and the disc films.
 std::vector<Junction> collapsible_films(const Cluster& c);
 
 class TopologyWatch {

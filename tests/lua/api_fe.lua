@@ -70,7 +70,7 @@ T.check_error("read: option 'fixed' is not used for an .fe file", froth.read, di
 
 -- Bad files: one clear line naming the file, the line and what is wrong.
 local function with_file(text, f)
-  local path = os.tmpname() .. ".fe"
+  local path = T.temp_path(".fe")
   local h = assert(io.open(path, "w"))
   h:write(text)
   h:close()
@@ -218,7 +218,7 @@ T.assert_true(math.abs(rb:pressures()[1] + 0.150273089408419) < 2e-3, "ring body
 
 local ok, err = pcall(froth.read, "/nonexistent/x.fe")
 T.assert_true(not ok and tostring(err):find("read: cannot open '/nonexistent/x.fe': No such file or directory", 1, true), "a missing file", tostring(err))
-local folder = os.tmpname() .. ".fe"
+local folder = T.temp_path(".fe")
 assert(os.execute("mkdir " .. folder))
 ok, err = pcall(froth.read, folder)
 os.execute("rmdir " .. folder)

@@ -150,7 +150,7 @@ do
   T.assert_near(c:energy(), 4 * math.sqrt(3) * 0.3 ^ 2, 1e-14, "read: its area")
   T.assert_near(c:target_volumes()[1], 0.04, 0, "read: its target volume")
   local text = io.open(here .. "/../data/fe/octahedron_torus.fe"):read("a")
-  local path = os.tmpname() .. ".fe"
+  local path = T.temp_path(".fe")
   local f = io.open(path, "w")
   f:write((text:gsub("\n1 1 3 %- %+ %*", "\n1 1 3 * + *"))) -- one wrap wrong: the loop opens
   f:close()

@@ -142,6 +142,7 @@ T.check_error("must be a function wall", froth.load, file,
 check_resume("user wall and mobility", uw, sd(2, 2e-3),
              {walls = {table = user_plane()}, mobilities = {beta}})
 check_resume("user wall by index", uw, sd(1, 2e-3), {walls = {user_plane()}, mobilities = {beta}})
+os.remove(file)
 
 -- Fixed vertices and wires: the catenoid between two rings, fixed after a move.
 local function ring(z, n, first)

@@ -554,8 +554,8 @@ do
 end
 
 -- 5e. A sliver no upkeep can mend (its corners fixed) at a quadruple point: evolve with
--- transitions leaves it to later steps while it stays above a tenth of the watch's limits
--- (deferred), and stops at once below that. Film 1|2's corner at q squeezed to about 0.2
+-- transitions leaves it to later steps (deferred); below a tenth of the watch's limits only
+-- while no facets cross, and stops where they do. Film 1|2's corner at q squeezed to about 0.2
 -- (0.02) degrees, as in 5c, its three corners held.
 local function squeezed_corner(sine)
   local first = bent_first()
@@ -576,9 +576,20 @@ do
   T.assert_equal(stopped.steps, 1, "without transitions the watch stops the run")
   T.assert_equal(stopped.deferred, 0, "and leaves nothing to later steps")
   local thin = squeezed_corner(math.sin(math.rad(0.02)))
+  T.assert_true(thin:report().mesh.min_angle < 0.05, "a sliver below a tenth of the limit",
+                tostring(thin:report().mesh.min_angle))
   local r2 = thin:evolve{flow = "mcf", tau = 1e-3, steps = 3, progress = false}
-  T.assert_equal(r2.steps, 1, "below a tenth of the limits the run stops")
-  T.assert_true(r2.stop_reason:find("is collapsing", 1, true) ~= nil, "on the collapsing edge or facet", r2.stop_reason)
+  T.assert_equal(r2.stop_reason, "steps done", "below a tenth of the limits the run goes on")
+  T.assert_equal(r2.deferred, 3, "while no facets cross")
+  -- line 4's first vertex pulled out through the outer face of corners 1, 2, 3: its films
+  -- cross that face, and the deep sliver stops the run
+  local crossed = squeezed_corner(math.sin(math.rad(0.02)))
+  crossed:set_vertex(9, {-2 * corners[4][1], -2 * corners[4][2], -2 * corners[4][3]})
+  local r3 = crossed:evolve{flow = "mcf", tau = 1e-3, steps = 3, progress = false}
+  T.assert_equal(r3.event and r3.event.kind, "self-intersection", "crossing facets stop it", r3.stop_reason)
+  T.assert_true(r3.stop_reason:find("is collapsing", 1, true) ~= nil and
+                r3.stop_reason:find("below a tenth of the limits, and facet", 1, true) ~= nil,
+                "the message names the sliver and the crossing", r3.stop_reason)
 end
 
 -- errors

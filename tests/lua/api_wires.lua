@@ -86,7 +86,7 @@ T.assert_true(c:area() < coarse, "the refined film on the same polygons has a lo
 local film = froth.cluster((tube(24, 8, z0)))
 T.assert_equal(#film:edges{where = function(e) return e.wire end}, 48, "48 wire edges (two 24-gons)")
 T.assert_equal(#film:edges{where = function(e) return e.boundary and not e.wire end}, 0, "no wall edges")
-local path = os.tmpname() .. ".msh"
+local path = T.temp_path(".msh")
 film:write(path)
 T.check_error("no wall is attached", froth.read, path)
 local back = froth.read(path, {fixed = film:fixed()})
@@ -157,7 +157,7 @@ T.assert_near(ev:volumes()[1], z_content + 2 * math.pi * z0, 1e-12, "volconst: E
 ev:set_volume(1, 1.5)
 local r = ev:minimize{max_iterations = 200}
 T.assert_near(ev:volumes()[1], 1.5, 1e-12, "volconst: minimize holds Evolver's volume")
-local file = os.tmpname() .. ".froth"
+local file = T.temp_path(".froth")
 ev:save(file)
 local back = froth.load(file)
 os.remove(file)

@@ -106,7 +106,7 @@ for _, name in ipairs({"hexagonal", "fig3_left", "fig3_right"}) do
 end
 
 -- Writing works like for any cluster.
-local path = os.tmpname() .. ".vtu"
+local path = T.temp_path(".vtu")
 w3:write(path)
 local file = io.open(path)
 T.assert_true(file ~= nil, "c:write of a Wulff shape")
