@@ -38,11 +38,14 @@ print(("%d grains (seed %d, %d Lloyd steps): %d films, %d triple lines, %d quadr
 
 local residuals, counts, clean_steps, deferred, retried = {}, {}, 0, 0, 0
 local steps, stop = 0, "T reached"
-local t_end = c:time() + opts.T - 1e-12
+local t_end = c:time() + opts.T
 local clock = os.clock()
-while c:time() < t_end do
+while c:time() < t_end - 1e-12 do
   local before, t_before = c:grain_measures(), c:time()
-  local r = c:evolve{flow = "mcf", tau = opts.tau, steps = 1, progress = false}
+  -- the last step ends on T (after a retried step the steps are shorter than tau for a while,
+  -- so the steps need not add up to it)
+  local r = c:evolve{flow = "mcf", tau = math.min(opts.tau, t_end - c:time()), steps = 1,
+                     progress = false}
   steps = steps + 1
   for _, e in ipairs(r.events) do
     counts[e.kind] = (counts[e.kind] or 0) + 1
@@ -75,7 +78,7 @@ table.sort(made)
 print(("%d steps to t = %.4f in %.1f s: %s; %d grains left"):format(steps, c:time(), seconds,
       #made > 0 and table.concat(made, ", ") or "no transitions", c:info().bodies))
 print("stop: " .. stop)
-print(("%d steps went on past a sliver the upkeep left (deferred), %d were retried shorter")
+print(("%d steps went on past a sliver the upkeep left (deferred); steps retried shorter: %d")
       :format(deferred, retried))
 table.sort(residuals)
 if #residuals > 0 then

@@ -25,8 +25,6 @@
 namespace froth {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 class DiscCaps {
   public:
     DiscCaps(const Cluster& c, int film)
@@ -125,7 +123,7 @@ void DiscCaps::unwrap_loop() {
     if (along == 0 || out_of_d == 0)
         throw TopologyError(name_ + ": its facets do not follow its border");
     into_d_ = -(out_of_d * along) * area.normalized();
-    radius_ = perimeter_ / (2 * kPi);
+    radius_ = perimeter_ / (2 * M_PI);
 }
 
 /// Surface si of spec closes over the loop with a fan to apex: a facet (y, x, apex) per facet

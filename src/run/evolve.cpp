@@ -200,9 +200,10 @@ class Run {
 
     /// In a network (facet_upkeep_allowed, with fixed steps), a step after which the run would
     /// stop on a collapsing edge or facet or on crossing facets, or that fails, is retried from
-    /// the state before it at a quarter of its tau: junctions that a step of tau moves past each other (a line of
-    /// a few thousandths passing a film's corner) are often seen in time at a shorter step,
-    /// where their transitions can still be made. A pinch-off scene stops as before.
+    /// the state before it at a quarter of its tau: junctions that a step of tau moves past
+    /// each other (a line of a few thousandths passing a film's corner) are often seen in time
+    /// at a shorter step, where their transitions can still be made. A pinch-off scene stops
+    /// as before.
     bool retries_allowed() const {
         return o_.transitions && !o_.adaptive && facet_upkeep_allowed();
     }
@@ -441,7 +442,8 @@ class Run {
     /// True if no two facets of the cluster cross, tested now; false where the test is not
     /// available (without CGAL: e stands, as the hard limit it was until 2026-12-07), or
     /// with e made the crossing's event, its message after e's. The 27-grain network of seed 3
-    /// stopped at t = 0.748 on a needle below the hard limit; past it, 1.98.
+    /// stopped at t = 0.748 on a needle below the hard limit; from the state before that step
+    /// it went on to t = 1.98 with this test in the limit's place.
     bool embedded_past(TopologyEvent& e) const {
         if (!self_intersection_available()) return false;
         const std::vector<FacetCrossing> crossings = find_self_intersections(c_, 1);
