@@ -141,6 +141,7 @@ class Run {
         bool last = false;
         std::optional<Before> before;
         if (retries_allowed()) before.emplace(keep_before());
+        before_kept_ = before.has_value();
         std::optional<StepReport> s =
             o_.adaptive ? try_adaptive_step(last) : try_step(planned_tau(), last);
         if (!s) return before && retry(*before);
@@ -214,28 +215,55 @@ class Run {
 
     /// Returns the run to `b` with the next tau a quarter of the last (true), unless tau is
     /// down to kMinTauScale of the option's or the stop is not one a shorter step may avoid
-    /// (false: the run stops, the message saying at which tau).
+    /// (false: the run stops, the message saying at which tau; after crossing facets the
+    /// state before the step is kept).
     bool retry(Before& b) {
         const std::string kind = r_.event ? r_.event->kind : "";
         const bool retried_kind = kind == "collapsing edge" || kind == "collapsing facet" ||
                                   kind == "step failed" || kind == "self-intersection";
-        if (!retried_kind || tau_scale_ / 4 < kMinTauScale) {
-            if (r_.event && tau_scale_ < 1)
-                r_.event->message += "; the step was retried down to tau = " +
-                                     fmt(tau_scale_ * o_.tau);
-            return false;
+        if (retried_kind && tau_scale_ / 4 >= kMinTauScale) {
+            const int retried = r_.rejected_steps + 1;
+            restore(b);
+            r_.rejected_steps = retried;
+            tau_scale_ /= 4;
+            return true;
         }
-        const int retried = r_.rejected_steps + 1;
+        if (r_.event && tau_scale_ < 1)
+            r_.event->message += "; the step was retried down to tau = " + fmt(tau_scale_ * o_.tau);
+        if (kind == "self-intersection") {
+            TopologyEvent e = std::move(*r_.event);
+            const int retried = r_.rejected_steps;
+            restore(b);
+            if (self_intersection_available() && find_self_intersections(c_, 1).empty()) {
+                e.message += "; the state before the step, at t = " + fmt(c_.time()) + ", is kept";
+                e.t = c_.time();
+            } else {
+                keep_uncrossed(e); // the crossing came before the step
+            }
+            r_.event = std::move(e), r_.rejected_steps = retried;
+        }
+        return false;
+    }
+
+    /// After crossing facets: the cluster goes back to the last state that passed the
+    /// crossing test, and e says so.
+    void keep_uncrossed(TopologyEvent& e) {
+        c_.set_positions(uncrossed_);
+        c_.set_time(uncrossed_t_);
+        e.message += "; the state at t = " + fmt(uncrossed_t_) +
+                     ", the last one without crossings, is kept";
+        e.t = uncrossed_t_;
+    }
+
+    /// The run as it was before a step (Before).
+    void restore(Before& b) {
         c_ = std::move(b.c);
         junctions_ = std::move(b.junctions);
         original_body_ = std::move(b.original_body);
         r_ = std::move(b.r);
-        r_.rejected_steps = retried;
         history_.resize(b.history_rows);
         uncrossed_ = std::move(b.uncrossed), uncrossed_t_ = b.uncrossed_t;
         stepper_.reset();
-        tau_scale_ /= 4;
-        return true;
     }
 
     double progress() const {
@@ -357,13 +385,7 @@ class Run {
             if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
             return false;
         }
-        if (e->kind == "self-intersection") {
-            c_.set_positions(uncrossed_);
-            c_.set_time(uncrossed_t_);
-            e->message += "; the state at t = " + fmt(uncrossed_t_) +
-                          ", the last one without crossings, is kept";
-            e->t = uncrossed_t_;
-        }
+        if (e->kind == "self-intersection" && !before_kept_) keep_uncrossed(*e); // else retry()
         r_.event = std::move(e);
         return true;
     }
@@ -684,6 +706,7 @@ class Run {
     /// The shortest retried step, relative to the option's tau (three retries).
     static constexpr double kMinTauScale = 1.0 / 64;
     double tau_scale_ = 1; // the planned step over the option's tau (below 1 after a retry)
+    bool before_kept_ = false; // this step can be undone (retry)
     /// Times the upkeeps are gone through for one defect that none of them mends.
     static constexpr int kPassesAtOneDefect = 2;
     bool caps_relaxed_ = false; // relax_caps_once made its move in this step's look
