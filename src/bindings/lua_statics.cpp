@@ -281,9 +281,10 @@ int l_collapse_two_sided_film(lua_State* L) {
 /// c:collapse_disc_film(surface): a disc bounded by one closed triple line goes: its loop
 /// collapses, or where the mesh refuses that, caps close it.
 int l_collapse_disc_film(lua_State* L) {
-    return film_collapse(L, "collapse_disc_film", [](const Cluster& c, int film, TransitionRecord* r) {
-        return close_disc_film(c, film, r);
-    });
+    return film_collapse(L, "collapse_disc_film",
+                         [](const Cluster& c, int film, TransitionRecord* r) {
+                             return close_disc_film(c, film, r);
+                         });
 }
 
 /// The one length option of c:split_edges, positive and finite.

@@ -392,7 +392,9 @@ Cluster InverseT1::run(TransitionRecord* record) {
     Cluster r = finish(surgery::rebuild(std::move(spec), name_, "its collapse"));
     check_ends(r, used);
     if (record) {
-        record->kind = n_sides_ == 3 ? "inverse T1" : n_sides_ == 2 ? "two-sided film" : "disc film";
+        record->kind = n_sides_ == 3   ? "inverse T1"
+                       : n_sides_ == 2 ? "two-sided film"
+                                       : "disc film";
         record->fitted = fitted_;
         record->size = length_;
         record->film = film_;
