@@ -20,7 +20,7 @@ struct TransitionRecord {
     std::string where;   ///< for people: "body 3 (volume 1e-05, 4 neighbouring cells) at (x, y, z)"
     int body = -1;       ///< pop, absorb: the body that vanished (0-based, its id before)
     int line = -1;       ///< T1: the triple line that became a film (0-based, before)
-    int film = -1;       ///< inverse T1, two-sided film: the film that went (0-based, before)
+    int film = -1;       ///< inverse T1, two-sided or disc film: the film that went (0-based)
     /// T1: the bodies the new film lies between; inverse T1: those the film lay between
     /// (-1: outside); absorb: the body and the one that absorbed it
     std::array<int, 2> cells{-1, -1};

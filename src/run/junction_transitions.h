@@ -33,7 +33,8 @@ struct TransitionRecord; // mesh/transitions.h
 
 /// A topological transition a run made.
 struct TransitionEvent {
-    std::string kind;  ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film"
+    std::string kind;  ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film",
+                       ///< "disc film"
     std::string where; ///< what and where, for people (TransitionRecord::where)
     double t = 0;      ///< the model time of the transition
     int step = 0;      ///< it followed this step (evolve) or round (minimize) of the run (1-based)
@@ -42,7 +43,7 @@ struct TransitionEvent {
     int neighbours = 0; ///< pop, absorb: the cells around it (the outside counts as one)
     double energy_before = 0, energy_after = 0;
     int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)
-    int film = -1;     ///< inverse T1: the film that became a line (0-based, its id before)
+    int film = -1;     ///< inverse T1, lens, disc: the film that went (0-based, its id before)
     /// T1: the bodies the new film lies between; inverse T1: those the film lay between;
     /// absorb: the body and the one it joined; as numbered at the start of the run (-1: the
     /// outside)
