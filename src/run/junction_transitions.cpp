@@ -99,7 +99,8 @@ void JunctionTransitions::carry_over(const std::vector<int>& original_body) {
     };
     renumber(line_sizes_), renumber(film_sizes_), renumber(products_[0]), renumber(products_[1]);
     renumber(contacts_);
-    made_[0].clear(), made_[1].clear(), refused_.clear(), refusals_.clear();
+    made_[0].clear(), made_[1].clear(), refused_.clear(), forced_refused_.clear();
+    refusals_.clear();
     bodies_ = static_cast<int>(original_body.size());
 }
 
@@ -107,7 +108,8 @@ void JunctionTransitions::new_look() {
     ++look_;
     for (auto it = contacts_.begin(); it != contacts_.end();)
         it = look_ - it->second >= kContactLooks ? contacts_.erase(it) : std::next(it);
-    made_[0].clear(), made_[1].clear(), refused_.clear(), refusals_.clear();
+    made_[0].clear(), made_[1].clear(), refused_.clear(), forced_refused_.clear();
+    refusals_.clear();
 }
 
 namespace {
@@ -291,6 +293,7 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
     const auto key = std::make_tuple(film, force, acted.cells);
     if (const auto it = refusals_.find(key); it != refusals_.end() && it->second.size == acted.size) {
         refused_ = it->second.why;
+        if (force) forced_refused_ = refused_;
         return std::nullopt;
     }
     TransitionRecord record;
@@ -317,6 +320,7 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
             if (why.rfind(op, 0) == 0) why.erase(0, op.size());
         refused_ = std::string(what) + " could be made: " + why;
         refusals_[key] = {acted.size, refused_};
+        if (force) forced_refused_ = refused_;
         return std::nullopt;
     }
 }

@@ -81,7 +81,12 @@ class JunctionTransitions {
     /// refused() says why the due ones could not be made).
     std::optional<Cluster> make(const Cluster& c, bool films, bool force,
                                 const std::vector<int>& original_body, TransitionEvent& event);
-    const std::string& refused() const { return refused_; }
+    /// Why the last forced attempt of this look was refused, or without one the last attempt:
+    /// a forced one ignores the contact lock, so its reason is the mesh's (a stop's message
+    /// named the lock of a later unforced attempt before).
+    const std::string& refused() const {
+        return forced_refused_.empty() ? refused_ : forced_refused_;
+    }
 
   private:
     std::vector<Junction> junctions(const Cluster& c, bool films,
@@ -141,6 +146,7 @@ class JunctionTransitions {
     int look_ = 0;
     int bodies_ = -1; // carry_over: the number of bodies the memory is for
     std::string refused_;             // why a due transition could not be made in this look
+    std::string forced_refused_;      // why the last forced one could not
 };
 
 } // namespace froth
