@@ -63,11 +63,10 @@ while c:time() < t_end - 1e-12 do
     end
   end
   if steps % opts.every == 0 then
+    local made = 0
+    for _, n in pairs(counts) do made = made + n end
     print(("step %4d  t = %.4f  energy %.6f  grains %d  transitions so far %d")
-          :format(steps, c:time(), c:energy(), c:info().bodies,
-                  (counts["T1"] or 0) + (counts["inverse T1"] or 0) + (counts["two-sided film"] or 0)
-                  + (counts["disc film"] or 0) + (counts["pop body"] or 0)
-                  + (counts["absorb body"] or 0)))
+          :format(steps, c:time(), c:energy(), c:info().bodies, made))
   end
 end
 local seconds = os.clock() - clock

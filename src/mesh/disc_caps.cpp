@@ -49,7 +49,7 @@ class DiscCaps {
     std::map<int, Offset> offset_;      // their lattice offsets in l_0's frame
     std::map<int, int> copy_;           // l_i -> l_i' (E|X's)
     Vec3 centre_ = Vec3::Zero(), into_d_ = Vec3::Zero();
-    double radius_ = 0, perimeter_ = 0, eps_ = 0;
+    double radius_ = 0, perimeter_ = 0;
     int n_ = 0;                         // c's vertex count: a, b, then the copies
     std::vector<surgery::MovedFacet> moved_; // E|X's facets at a copy
 };
@@ -160,17 +160,18 @@ void DiscCaps::cap(ClusterSpec& spec, int si, int apex, bool copies) {
     }
 }
 
-/// The positions after the surgery: c's, a, b, the copies; eps and delta (eps / 2, delta the
-/// radius / 2 at first) halved while a facet of E|X at a copy turns over, at most ten times.
+/// The positions after the surgery: c's, a and b delta from the centre, the copies eps =
+/// delta / 2 towards E; delta half the radius at first, halved while a facet of E|X at a copy
+/// turns over, at most ten times.
 std::vector<Vec3> DiscCaps::place(const ClusterSpec& spec) {
     int turned = -1;
     double delta = 0.5 * radius_;
     for (int halvings = 0; halvings <= 10; ++halvings, delta *= 0.5) {
-        eps_ = 0.5 * delta;
+        const double eps = 0.5 * delta;
         std::vector<Vec3> V = c_.positions();
         V.push_back(centre_ + delta * into_d_);
         V.push_back(centre_ - delta * into_d_);
-        for (int v : loop_) V.push_back(c_.position(v) - eps_ * into_d_);
+        for (int v : loop_) V.push_back(c_.position(v) - eps * into_d_);
         if (!surgery::turns_a_facet(spec, V, moved_, &turned)) return V;
     }
     throw TopologyError(name_ + ": its caps would turn a facet of surface " +

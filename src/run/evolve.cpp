@@ -141,13 +141,12 @@ class Run {
         bool last = false;
         std::optional<Before> before;
         if (retries_allowed()) before.emplace(keep_before());
-        before_kept_ = before.has_value();
         std::optional<StepReport> s =
             o_.adaptive ? try_adaptive_step(last) : try_step(planned_tau(), last);
         if (!s) return before && retry(*before);
         if (last) c_.set_time(t_end_), s->t = t_end_;
         record(*s);
-        if (watch_for_topology()) return before && retry(*before);
+        if (watch_for_topology(before.has_value())) return before && retry(*before);
         tau_scale_ = std::min(1.0, 2 * tau_scale_);
         write_output(*s);
         if (o_.on_step && !o_.on_step(*s)) {
@@ -229,13 +228,15 @@ class Run {
             return true;
         }
         if (r_.event && tau_scale_ < 1)
-            r_.event->message += "; the step was retried down to tau = " + fmt(tau_scale_ * o_.tau);
+            r_.event->message +=
+                "; the step was retried down to tau = " + fmt(tau_scale_ * o_.tau);
         if (kind == "self-intersection") {
             TopologyEvent e = std::move(*r_.event);
             const int retried = r_.rejected_steps;
             restore(b);
             if (self_intersection_available() && find_self_intersections(c_, 1).empty()) {
-                e.message += "; the state before the step, at t = " + fmt(c_.time()) + ", is kept";
+                e.message +=
+                    "; the state before the step, at t = " + fmt(c_.time()) + ", is kept";
                 e.t = c_.time();
             } else {
                 keep_uncrossed(e); // the crossing came before the step
@@ -361,9 +362,10 @@ class Run {
 
     /// True if the watch saw a topology change coming that it could not get past; a crossing
     /// state is not a valid one, so then the cluster returns to the last state that passed the
-    /// crossing test. With EvolveOptions::transitions the due T1s, pops and mesh upkeep are
-    /// made first, each followed by a new look.
-    bool watch_for_topology() {
+    /// crossing test (unless the step is `undoable`: retry() decides what is kept). With
+    /// EvolveOptions::transitions the due T1s, pops and mesh upkeep are made first, each
+    /// followed by a new look.
+    bool watch_for_topology(bool undoable) {
         std::optional<TopologyEvent> e;
         junctions_.new_look();
         caps_relaxed_ = false;
@@ -385,7 +387,7 @@ class Run {
             if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
             return false;
         }
-        if (e->kind == "self-intersection" && !before_kept_) keep_uncrossed(*e); // else retry()
+        if (e->kind == "self-intersection" && !undoable) keep_uncrossed(*e); // else retry()
         r_.event = std::move(e);
         return true;
     }
@@ -470,13 +472,8 @@ class Run {
         if (!self_intersection_available()) return false;
         const std::vector<FacetCrossing> crossings = find_self_intersections(c_, 1);
         if (crossings.empty()) return true;
-        const auto facet = [](const FacetRef& r) {
-            return "facet " + std::to_string(r.facet + 1) + " of surface " +
-                   std::to_string(r.surface + 1);
-        };
         e.kind = "self-intersection";
-        e.message += "; below a tenth of the limits, and " + facet(crossings.front().a) +
-                     " crosses " + facet(crossings.front().b);
+        e.message += "; below a tenth of the limits, and " + crossing_text(crossings.front());
         return false;
     }
 
@@ -706,7 +703,6 @@ class Run {
     /// The shortest retried step, relative to the option's tau (three retries).
     static constexpr double kMinTauScale = 1.0 / 64;
     double tau_scale_ = 1; // the planned step over the option's tau (below 1 after a retry)
-    bool before_kept_ = false; // this step can be undone (retry)
     /// Times the upkeeps are gone through for one defect that none of them mends.
     static constexpr int kPassesAtOneDefect = 2;
     bool caps_relaxed_ = false; // relax_caps_once made its move in this step's look

@@ -134,9 +134,8 @@ class JunctionTransitions {
     // cluster, and without this every call of make tried every refused one again (the
     // 1000-cell minimize spent an hour so); a transition beside one may change what the mesh
     // allows there, so it is tried again then. They hold for the mesh they were met on
-    // (mesh_, a hash) or one a
-    // transition of this memory made from it: any other change (mesh upkeep, a step)
-    // forgets them all.
+    // (mesh_, a hash) or one a transition of this memory made from it: any other change
+    // (mesh upkeep, a step) forgets them all.
     struct Refusal {
         double size;
         std::string why;

@@ -76,18 +76,15 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
                     angle_ratio = ratio, smallest_angle = angle, s_angle = i, f_angle = f;
             }
     }
-    auto facet = [](int s, int f) {
-        return "facet " + std::to_string(f + 1) + " of surface " + std::to_string(s + 1);
-    };
     const double mean = sum / count;
     if (scaled_shortest < o.min_edge_fraction * mean)
         return TopologyEvent{"collapsing edge",
-                             "an edge of " + facet(s_edge, f_edge) + " is collapsing: length " +
+                             "an edge of " + facet_name(s_edge, f_edge) + " is collapsing: length " +
                                  fmt(shortest) + ", mean edge " + fmt(mean) + at_time(c),
                              c.time()};
     if (angle_ratio < 1)
         return TopologyEvent{"collapsing facet",
-                             facet(s_angle, f_angle) + " is collapsing: corner angle " +
+                             facet_name(s_angle, f_angle) + " is collapsing: corner angle " +
                                  fmt(smallest_angle) + " degrees" + at_time(c),
                              c.time()};
     return std::nullopt;
@@ -203,6 +200,10 @@ std::vector<Junction> collapsible_films(const Cluster& c) {
     return out;
 }
 
+std::string crossing_text(const FacetCrossing& x) {
+    return facet_name(x.a.surface, x.a.facet) + " crosses " + facet_name(x.b.surface, x.b.facet);
+}
+
 bool TopologyWatch::tests_crossings(int step) const {
     const int every = options_.self_intersection_every;
     return options_.enabled && every > 0 && step % every == 0 && self_intersection_available();
@@ -216,12 +217,7 @@ std::optional<TopologyEvent> TopologyWatch::check(const Cluster& c, int step) co
         const auto crossings = find_self_intersections(c, 1);
         if (!crossings.empty()) {
             const FacetCrossing& x = crossings.front();
-            auto facet = [](const FacetRef& r) {
-                return "facet " + std::to_string(r.facet + 1) + " of surface " +
-                       std::to_string(r.surface + 1);
-            };
-            return TopologyEvent{"self-intersection",
-                                 facet(x.a) + " crosses " + facet(x.b) + at_time(c), c.time()};
+            return TopologyEvent{"self-intersection", crossing_text(x) + at_time(c), c.time()};
         }
     }
     return std::nullopt;

@@ -50,6 +50,10 @@ struct EdgeLengths {
     double mean = 0, longest = 0;
 };
 EdgeLengths edge_lengths(const Cluster& c);
+
+struct FacetCrossing; // checks/self_intersection.h
+/// "facet 3 of surface 2 crosses facet 7 of surface 5" (geometry.h's facet_name of each).
+std::string crossing_text(const FacetCrossing& x);
 double mean_edge_length(const Cluster& c); ///< edge_lengths(c).mean
 
 /// Where a T1, an inverse T1 or a lens's or disc's collapse can act: a triple line between two
