@@ -192,16 +192,38 @@ class CellWalker {
   public:
     CellWalker(const std::vector<Surface>& surfaces, const std::vector<Vec3>& X,
                const Eigen::Matrix3d& L)
-        : surfaces_(surfaces), X_(X), L_(L), sides_(facet_sides(surfaces)) {}
+        : surfaces_(surfaces), X_(X), L_(L), sides_(facet_sides(surfaces)) {
+        first_facet_.push_back(0);
+        for (const Surface& S : surfaces_)
+            first_facet_.push_back(first_facet_.back() + static_cast<int>(S.triangles.size()));
+        // each facet side's group in sides_ (the facets at its edge), found once
+        group_.resize(3 * static_cast<std::size_t>(first_facet_.back()));
+        for (std::size_t i = 0; i < sides_.size();) {
+            std::size_t end = i;
+            while (end < sides_.size() && sides_[end].lo == sides_[i].lo &&
+                   sides_[end].hi == sides_[i].hi)
+                ++end;
+            for (std::size_t k = i; k < end; ++k)
+                group_[3 * facet_index(sides_[k].surface, sides_[k].facet) + sides_[k].corner] =
+                    {static_cast<int>(i), static_cast<int>(end)};
+            i = end;
+        }
+        seen_.assign(2 * static_cast<std::size_t>(first_facet_.back()), -1);
+        seen_m_.resize(seen_.size());
+    }
 
     /// Walks the cell of a body that names each surface `times[s]` times (0, 1 or 2), from
     /// facet 0 of `start` with outward sign `sign`.
     CellWalk walk(const std::string& name, const std::vector<int>& times, int start, int sign) const {
         CellWalk out;
-        std::map<std::tuple<int, int, int>, Eigen::Vector3i> seen; // (surface, facet, sign) -> m
+        ++walks_; // seen_ holds this walk's facet sides where it equals walks_, with seen_m_
+        const auto seen_at = [&](int surface, int facet, int side) {
+            return 2 * static_cast<std::size_t>(facet_index(surface, facet)) + (side > 0);
+        };
         std::vector<int> side_of(surfaces_.size(), 0); // the sign met on a surface named once
         std::vector<CellFacet> queue = {{start, 0, sign, Eigen::Vector3i::Zero()}};
-        seen[{start, 0, sign}] = Eigen::Vector3i::Zero();
+        seen_[seen_at(start, 0, sign)] = walks_;
+        seen_m_[seen_at(start, 0, sign)] = Eigen::Vector3i::Zero();
         side_of[start] = sign;
         while (!queue.empty()) {
             const CellFacet f = queue.back();
@@ -226,10 +248,11 @@ class CellWalker {
                         break;
                     }
                 }
-                const auto [it, fresh] = seen.emplace(std::tuple{g.surface, g.facet, g.sign}, g.m);
-                if (fresh) {
+                const std::size_t at = seen_at(g.surface, g.facet, g.sign);
+                if (seen_[at] != walks_) {
+                    seen_[at] = walks_, seen_m_[at] = g.m;
                     queue.push_back(g);
-                } else if (it->second != g.m) {
+                } else if (seen_m_[at] != g.m) {
                     out.error = "cluster: " + name + " wraps around the periodic box (its films "
                                 "do not close up into one cell once unwrapped, near " +
                                 edge(f, j) + ")";
@@ -276,6 +299,29 @@ class CellWalker {
         const Tri& t = surfaces_[f.surface].triangles[f.facet];
         const Offset* k = surfaces_[f.surface].offsets[f.facet].data();
         const int a = t[j], b = t[(j + 1) % 3];
+        const std::array<int, 2> group = group_[3 * facet_index(f.surface, f.facet) + j];
+        const auto range = std::pair{sides_.begin() + group[0], sides_.begin() + group[1]};
+        const auto facet_across = [&](const FacetSide& side) {
+            const Surface& S = surfaces_[side.surface];
+            const Tri& tg = S.triangles[side.facet];
+            const int ca = corner_of(tg, a);
+            CellFacet g{side.surface, side.facet, 0,
+                        lattice(k[j]) + f.m - lattice(S.offsets[side.facet][ca])};
+            const int dir = tg[(ca + 1) % 3] == b ? 1 : -1; // +1: g runs a -> b, as f does
+            g.sign = -f.sign * dir;                          // so that the two run it oppositely
+            return g;
+        };
+        // the first rule needs no geometry (inside a film, the common case: the rebuilds of
+        // a 20k-vertex network spent most of their time in the wedges' angles)
+        int named = 0;
+        const FacetSide* only_named = nullptr;
+        for (auto it = range.first; it != range.second; ++it)
+            if (!(it->surface == f.surface && it->facet == f.facet) && times[it->surface] > 0)
+                ++named, only_named = &*it;
+        if (named == 1) {
+            next = facet_across(*only_named);
+            return true;
+        }
         const std::array<Vec3, 3> p = unwrapped(f);
         const Vec3 e = (p[(j + 1) % 3] - p[j]).normalized();
         const Vec3 inward = -f.sign * (p[1] - p[0]).cross(p[2] - p[0]).normalized();
@@ -285,39 +331,34 @@ class CellWalker {
         };
         const Vec3 u = across(p[(j + 2) % 3]);
         double best = INFINITY;
-        int named = 0;
-        CellFacet only_named{};
-        const auto range = std::equal_range(
-            sides_.begin(), sides_.end(), FacetSide{std::min(a, b), std::max(a, b), 0, 0, 0},
-            [](const FacetSide& x, const FacetSide& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });
         for (auto it = range.first; it != range.second; ++it) {
             if (it->surface == f.surface && it->facet == f.facet) continue;
-            const Surface& S = surfaces_[it->surface];
-            const Tri& tg = S.triangles[it->facet];
-            const int ca = corner_of(tg, a);
-            CellFacet g{it->surface, it->facet, 0,
-                        lattice(k[j]) + f.m - lattice(S.offsets[it->facet][ca])};
-            const int dir = tg[(ca + 1) % 3] == b ? 1 : -1; // +1: g runs a -> b, as f does
-            g.sign = -f.sign * dir;                          // so that the two run it oppositely
+            const CellFacet g = facet_across(*it);
+            const Tri& tg = surfaces_[it->surface].triangles[it->facet];
             const std::array<Vec3, 3> q = unwrapped(g);
-            const Vec3 w = across(q[3 - ca - corner_of(tg, b)]);
+            const Vec3 w = across(q[3 - corner_of(tg, a) - corner_of(tg, b)]);
             double angle = std::atan2(w.dot(inward), w.dot(u));
             if (angle <= 0) angle += 2 * std::numbers::pi;
             if (angle < best) best = angle, next = g;
-            if (times[g.surface] > 0) ++named, only_named = g;
         }
         if (best == INFINITY) {
             error = "cluster: " + name + " is not closed: " + edge(f, j) + " is in no other facet";
             return false;
         }
-        if (named == 1) next = only_named;
         return true;
     }
+
+    int facet_index(int surface, int facet) const { return first_facet_[surface] + facet; }
 
     const std::vector<Surface>& surfaces_;
     const std::vector<Vec3>& X_;
     const Eigen::Matrix3d& L_;
     std::vector<FacetSide> sides_;
+    std::vector<int> first_facet_;            // surface s's facets are first_facet_[s] + f
+    std::vector<std::array<int, 2>> group_;   // per facet side: its edge's range in sides_
+    mutable std::vector<int> seen_;           // per facet and sign: the walk that reached it
+    mutable std::vector<Eigen::Vector3i> seen_m_; // and the lattice translation it had then
+    mutable int walks_ = 0;
 };
 
 } // namespace
