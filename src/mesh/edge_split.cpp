@@ -102,6 +102,30 @@ EdgeSplitResult split_edges_where(const Cluster& c,
     return r;
 }
 
+/// A line film whose line collapses to a point folds over it where a vertex w off the line
+/// follows (or precedes) the point in two of the fans' facets: w is joined to two line
+/// vertices, and its facets between them do not reach the line (the 200-grain network's stop
+/// at t = 1.540: w joined to both ends of a line of two edges, the vertex beside w joined to
+/// all three, so that after the collapse the two would share two facets of opposite sides).
+/// The edges from such a w to the line are added to `sides`: their midpoints part the fan.
+void part_folds(const std::vector<Tri>& tris, const std::set<int>& on_line,
+                std::set<EdgeKey>& sides) {
+    std::map<int, int> starts, ends; // the link's edges (x, y) around the collapsed point
+    std::vector<std::pair<int, int>> touching; // (line vertex, w) of the one-corner facets
+    for (const Tri& t : tris) {
+        const int on = static_cast<int>(
+            std::count_if(t.begin(), t.end(), [&](int v) { return on_line.count(v) > 0; }));
+        if (on != 1) continue;
+        int j = 0;
+        while (!on_line.count(t[j])) ++j;
+        ++starts[t[(j + 1) % 3]], ++ends[t[(j + 2) % 3]];
+        touching.push_back({t[j], t[(j + 1) % 3]});
+        touching.push_back({t[j], t[(j + 2) % 3]});
+    }
+    for (const auto& [v, w] : touching)
+        if (starts[w] > 1 || ends[w] > 1) sides.insert(std::minmax(v, w));
+}
+
 } // namespace
 
 namespace surgery {
@@ -161,6 +185,7 @@ std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line,
         const std::set<int> at_a = neighbours_off_line(a), at_b = neighbours_off_line(b);
         for (int w : at_a)
             if (at_b.count(w)) sides.insert(std::minmax(a, w)), sides.insert(std::minmax(b, w));
+        for (int si : tl.surfaces) part_folds(c.surface(si).triangles, on_line, sides);
     }
     if (sides.empty()) return std::nullopt;
     // one pass splits an edge per facet: a facet's two sides take two

@@ -289,7 +289,9 @@ EdgeSplitResult split_long_edges(const Cluster& c, double max_length);
 /// line's ends to a vertex w joined to a through a film of the fourth cell at a and to b
 /// through one of the fourth cell at b (the T1 may give both films the edge from w to one new
 /// corner, an edge of four films; t1_line_to_film with fit_corners splits them where the T1
-/// fails without).
+/// fails without), and in the line's films the edges from the line to a vertex that would
+/// fold the film over the collapsed line (joined to two line vertices whose fans it does not
+/// join).
 std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line,
                                                  bool part_common_neighbours = false);
 

@@ -174,6 +174,56 @@ TEST(SplitFilmsEmptiedByT1, NothingWhereEveryFilmKeepsAFacet) {
             EXPECT_FALSE(split_films_emptied_by_t1(c, static_cast<int>(l)).has_value());
 }
 
+/// four_cells with the film between the lines to corners 1 and 2 (surface 4) triangulated
+/// anew around a vertex x (9) beside the line to corner 1: x is joined to the line's three
+/// vertices (4, 6, 1), and vertex 7 of the other line to its two ends only. Collapsing the
+/// line to a point would give that film two facets (x, 7) and (7, x) at it: a fold (the
+/// 200-grain network's stop at t = 1.540 had this shape).
+ClusterSpec four_cells_with_a_fold() {
+    ClusterSpec s = four_cells();
+    const Vec3 x = 0.5 * s.vertices[6] + 0.3 * s.vertices[1] + 0.2 * s.vertices[7];
+    s.vertices.push_back(x);
+    s.surfaces[3].triangles = {{4, 6, 9}, {6, 1, 9}, {9, 1, 7}, {1, 2, 7}, {9, 7, 4}};
+    return s;
+}
+
+int line_through(const Cluster& c, int v) {
+    for (std::size_t l = 0; l < c.triple_lines().size(); ++l) {
+        const std::vector<int>& w = c.triple_lines()[l].vertices;
+        if (std::find(w.begin(), w.end(), v) != w.end()) return static_cast<int>(l);
+    }
+    return -1;
+}
+
+// Without the splits the T1 is refused ("fold"); with part_common_neighbours the edges from
+// vertex 7 to the line's ends are split, which changes no area or volume, and the T1 goes.
+TEST(SplitFilmsEmptiedByT1, PartsAFilmThatWouldFoldOverTheLine) {
+    const Cluster c(four_cells_with_a_fold());
+    const int line = line_through(c, 6);
+    ASSERT_GE(line, 0);
+    ASSERT_EQ(c.triple_lines()[line].vertices.size(), 3u);
+    test::expect_error<TopologyError>([&] { t1_line_to_film(c, line, nullptr, 0, 0, false); },
+                                      {"would fold surface 4 over the point"});
+    EXPECT_FALSE(split_films_emptied_by_t1(c, line).has_value());
+    const std::optional<Cluster> r = split_films_emptied_by_t1(c, line, true);
+    ASSERT_TRUE(r.has_value());
+    EXPECT_EQ(r->n_vertices(), c.n_vertices() + 2); // on the edges (1, 7) and (4, 7)
+    for (int v = 0; v < c.n_vertices(); ++v) EXPECT_EQ(r->position(v), c.position(v));
+    const Vec3 mid_1 = 0.5 * (c.position(1) + c.position(7));
+    const Vec3 mid_4 = 0.5 * (c.position(4) + c.position(7));
+    for (int v = c.n_vertices(); v < r->n_vertices(); ++v)
+        EXPECT_LT(std::min((r->position(v) - mid_1).norm(), (r->position(v) - mid_4).norm()),
+                  1e-15);
+    EXPECT_NE((r->position(c.n_vertices()) - r->position(c.n_vertices() + 1)).norm(), 0.0);
+    EXPECT_NEAR(energy(*r), energy(c), 1e-13);
+    const std::vector<double> before = body_volumes(c), after = body_volumes(*r);
+    for (std::size_t b = 0; b < before.size(); ++b) EXPECT_NEAR(after[b], before[b], 1e-14);
+    // the T1 itself: the line becomes a film, its three corners quadruple points
+    const Cluster t1 = t1_line_to_film(c, line);
+    EXPECT_EQ(t1.quadruple_points().size(), c.quadruple_points().size() + 1);
+    EXPECT_EQ(t1.n_surfaces(), c.n_surfaces() + 1);
+}
+
 } // namespace
 } // namespace froth
 
@@ -295,6 +345,27 @@ TEST(FitCorners, KeepsAGoodCornerAndRefusesAFarOne) {
     EXPECT_EQ(good.V[4], Vec3(0.1, -0.2, 0));
     Fan far = square_fan({3, 3, 0});
     EXPECT_FALSE(surgery::fit_corners(far.spec, far.V, far.moved, {4}, 1.0));
+}
+
+// A rim vertex pushed to the far side (0 at x = -0.995) leaves the corner no place that keeps
+// every facet: fitting the corner alone fails. Made movable with its other facets watched
+// (add_facets_at, as the T1 does for the vertices beside its line), the two move together
+// and nothing turns.
+TEST(FitCorners, MovesARimVertexWhereTheCornerAloneCannot) {
+    Fan f = square_fan({0.2, 0.1, 0});
+    f.V[0] = {-0.995, 0, 0};
+    f.V.push_back({1.5, 0, 0});
+    f.spec.surfaces[0].triangles.push_back({0, 5, 1});
+    f.spec.surfaces[0].triangles.push_back({3, 5, 0});
+    std::vector<Vec3> alone = f.V;
+    EXPECT_FALSE(surgery::fit_corners(f.spec, alone, f.moved, {4}, 3.0));
+    std::vector<surgery::MovedFacet> watched = f.moved;
+    surgery::add_facets_at(f.spec, f.V, 0, 0, watched);
+    ASSERT_EQ(watched.size(), f.moved.size() + 2); // the two facets at 0 off the fan
+    ASSERT_FALSE(surgery::turns_a_facet(f.spec, f.V, {watched.begin() + 4, watched.end()}));
+    ASSERT_TRUE(surgery::fit_corners(f.spec, f.V, watched, {4, 0}, 3.0));
+    EXPECT_FALSE(surgery::turns_a_facet(f.spec, f.V, watched));
+    EXPECT_GT(f.V[0].x(), -0.995); // the rim vertex moved towards the corner's side
 }
 
 } // namespace
