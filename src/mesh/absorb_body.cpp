@@ -181,6 +181,15 @@ Cluster absorb_into(const Cluster& c, int b, int n, const std::vector<std::array
     join_surfaces(c, b, n, p, spec, surface_id, kept_surfaces);
     list_bodies(c, b, n, surface_id, spec);
     const std::vector<int> used = surgery::keep_used_vertices(spec, c.positions());
+    // a fixed vertex or one on a wall or wire goes only with the user's say
+    const auto gone_with = [&](int v) {
+        if (used[v] >= 0) return;
+        throw TopologyError(body_name(b) + ": vertex " + std::to_string(v + 1) + ", fixed or on "
+                            "a wall or wire, lies inside the films that would go with it");
+    };
+    for (int v : c.fixed_vertices()) gone_with(v);
+    for (const auto& attached : c.wall_attachments()) gone_with(attached[0]);
+    for (const CurvePoint& cp : c.curve_points()) gone_with(cp.vertex);
     surgery::copy_vertex_lists(c, [&](int old) { return used[old]; }, spec);
     Cluster r = surgery::rebuild(std::move(spec), body_name(b), "absorbing it");
     surgery::carry_over_without_body(c, b, kept_surfaces, r);

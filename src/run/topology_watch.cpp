@@ -81,16 +81,43 @@ std::optional<TopologyEvent> collapsing_edge_or_facet(const Cluster& c, const Wa
         return TopologyEvent{"collapsing edge",
                              "an edge of " + facet_name(s_edge, f_edge) + " is collapsing: length " +
                                  fmt(shortest) + ", mean edge " + fmt(mean) + at_time(c),
-                             c.time()};
+                             c.time(), -1, s_edge, f_edge};
     if (angle_ratio < 1)
         return TopologyEvent{"collapsing facet",
                              facet_name(s_angle, f_angle) + " is collapsing: corner angle " +
                                  fmt(smallest_angle) + " degrees" + at_time(c),
-                             c.time()};
+                             c.time(), -1, s_angle, f_angle};
     return std::nullopt;
 }
 
 } // namespace
+
+int unresolved_cell_near(const Cluster& c, int surface, int facet) {
+    const auto centre = [&](int s, int f) {
+        const auto x = c.surface(s).corners(c.positions(), f);
+        return Vec3((x[0] + x[1] + x[2]) / 3);
+    };
+    const Vec3 at = centre(surface, facet);
+    const double edge = mean_edge_length(c);
+    const auto within = [&](int b) { // a facet centre of body b within two mean edges
+        for (const BodyFace& face : c.bodies()[b].faces)
+            for (int f = 0; f < static_cast<int>(c.surface(face.surface).triangles.size()); ++f) {
+                Vec3 d = centre(face.surface, f) - at;
+                if (c.periodic()) d -= c.period() * (c.period().inverse() * d).array().round().matrix();
+                if (d.norm() < 2 * edge) return true;
+            }
+        return false;
+    };
+    const std::vector<double> volumes = body_volumes(c);
+    double mean_cell = 0;
+    for (double v : volumes) mean_cell += std::abs(v) / static_cast<double>(volumes.size());
+    const double unresolved = std::min(4.0 / 3.0 * M_PI * edge * edge * edge, 0.1 * mean_cell);
+    int smallest = -1;
+    for (int b = 0; b < c.n_bodies(); ++b)
+        if (volumes[b] < unresolved && (smallest < 0 || volumes[b] < volumes[smallest]) && within(b))
+            smallest = b;
+    return smallest;
+}
 
 EdgeLengths edge_lengths(const Cluster& c) {
     double sum = 0, longest = 0;

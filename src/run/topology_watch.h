@@ -43,6 +43,8 @@ struct TopologyEvent {
     std::string message; ///< what, where and when, for people
     double t = 0;        ///< model time of the state that is kept
     int body = -1;       ///< "vanishing body": which (0-based)
+    /// "collapsing edge", "collapsing facet": the facet the watch names (0-based)
+    int surface = -1, facet = -1;
 };
 
 /// The mean and the longest length of the facets' edges (each counted once per facet).
@@ -50,6 +52,12 @@ struct EdgeLengths {
     double mean = 0, longest = 0;
 };
 EdgeLengths edge_lengths(const Cluster& c);
+
+/// The smallest cell within two mean edges of facet `facet` of surface `surface` (facet
+/// centres, across a periodic box the nearest image) whose volume is below both a ball of the
+/// mean edge's radius and a tenth of the mean cell: a cell the mesh no longer resolves. -1 if
+/// there is none.
+int unresolved_cell_near(const Cluster& c, int surface, int facet);
 
 struct FacetCrossing; // checks/self_intersection.h
 /// "facet 3 of surface 2 crosses facet 7 of surface 5" (geometry.h's facet_name of each).

@@ -126,4 +126,71 @@ T.assert_true(absorbed > 0, "some grains joined a neighbour", tostring(absorbed)
 T.assert_equal(g:info().bodies, n0 - absorbed, "one body less for each")
 T.assert_equal(rg.stop_reason, "steps done", "and the run went on", rg.stop_reason)
 
+-- 6. evolve: a cell below the mesh's resolution beside a defect the upkeep cannot mend joins a
+-- neighbour (grain networks tangle there: the 200-grain network stopped at t = 1.540 beside a
+-- grain of 11 faces and 2.7 mean edges cubed). Box cells: two slabs below (bodies 1 and 3, split
+-- at x = 1.2), two above (4 and 5, split at y = 1.2), and between them at (1..1.1)^2 a cell 0.004
+-- thick, body 2 (volume 4e-5: far below a ball of the mean edge, 0.44, and a tenth of the mean
+-- cell). In its floor (film 1|2, which stays) the centre vertex is pulled to 0.0005 from a corner
+-- and both are fixed: a collapsing edge no upkeep can mend.
+local function thin_cell()
+  return froth.box_cells{x = {0, 1, 1.1, 1.2, 2.2}, y = {0, 1, 1.1, 1.2, 2.2}, z = {0, 1, 1.004, 2.004},
+                         cell = function(i, j, k)
+                           if k == 1 then return i <= 3 and 1 or 3 end
+                           if k == 2 and i == 2 and j == 2 then return 2 end
+                           return j <= 3 and 4 or 5
+                         end}
+end
+--- Pulls the film vertex at (cx, cy, cz) to `to` and fixes it and the vertex at `at`.
+local function short_fixed_edge(c, centre, at, to)
+  local ids = {}
+  for _, v in ipairs(c:vertices()) do
+    local x = v.x
+    local function near(p) return math.abs(x[1] - p[1]) + math.abs(x[2] - p[2]) + math.abs(x[3] - p[3]) < 1e-12 end
+    if near(centre) then ids.centre = v.id elseif near(at) then ids.at = v.id end
+  end
+  c:set_vertex(ids.centre, to)
+  c:fix({ids.centre, ids.at})
+end
+local near = thin_cell()
+T.assert_equal(#near:quadruple_points(), 5, "a network: quadruple points where the slabs' films meet")
+T.assert_near(near:volumes()[2], 4e-5, 1e-15, "body 2 is 0.1 x 0.1 x 0.004")
+short_fixed_edge(near, {1.05, 1.05, 1}, {1, 1, 1}, {1.0004, 1.0003, 1})
+local stopped = near:clone():evolve{flow = "mcf", tau = 1e-3, steps = 2, progress = false, transitions = false}
+T.assert_equal(stopped.event and stopped.event.kind, "collapsing edge", "without transitions the edge stops the run")
+local rn = near:evolve{flow = "mcf", tau = 1e-3, steps = 2, progress = false}
+T.assert_equal(rn.stop_reason, "steps done", "with them the run goes on", rn.stop_reason)
+T.assert_equal(#rn.events, 1, "through one transition")
+local ev = rn.events[1]
+T.assert_equal(ev.kind, "absorb body", "the thin cell joins a neighbour", ev.where)
+T.assert_equal(ev.body, 2, "body 2")
+T.assert_equal(ev.into, 4, "the one it shares the most film with: its roof and walls")
+T.assert_true(ev.energy_after < ev.energy_before, "the energy falls", ev.where)
+T.assert_equal(near:info().bodies, 4, "one body less")
+T.assert_equal(rn.deferred, 2, "the fixed edge itself is left to later steps")
+-- the same edge far from it (1.5 away, in film 1|3 near the box's corner): no cell goes
+local far = thin_cell()
+short_fixed_edge(far, {1.2, 1.7, 0.5}, {1.2, 2.2, 0}, {1.2, 2.1996, 0.0003})
+local rf = far:evolve{flow = "mcf", tau = 1e-3, steps = 2, progress = false}
+T.assert_equal(rf.stop_reason, "steps done", "the run goes on", rf.stop_reason)
+T.assert_equal(#rf.events, 0, "no transition")
+T.assert_equal(far:info().bodies, 5, "the thin cell stays")
+T.assert_equal(rf.deferred, 2, "the edge is left to later steps")
+
+-- 7. absorb_body refuses where a fixed vertex would go with the films (nothing changed).
+local pinned = thin_cell()
+local roof = {}
+for _, f in ipairs(pinned:facets{where = function(f) return f.bodies[1] == 2 or f.bodies[2] == 2 end}) do
+  if f.bodies[1] == 4 or f.bodies[2] == 4 then
+    for _, v in ipairs(f.vertices) do if pinned:vertex(v)[3] > 1.002 then roof[#roof + 1] = v end end
+  end
+end
+pinned:fix(roof)
+local nv = pinned:info().vertices
+local ok, err = pcall(function() return pinned:absorb_body(2, 4) end)
+T.assert_true(not ok, "refused")
+T.assert_true(tostring(err):find("fixed or on a wall or wire, lies inside the films that would go", 1, true) ~= nil,
+              "the message says why", tostring(err))
+T.assert_equal(pinned:info().vertices, nv, "nothing changed")
+
 T.summary()
