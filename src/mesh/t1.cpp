@@ -60,7 +60,6 @@ class T1 {
     void split_fans(ClusterSpec& spec, const LineEnd& end);
     double mean_edge_at(int v) const;
     std::vector<Vec3> place_film(const ClusterSpec& spec);
-    bool fit_beside_line(const ClusterSpec& spec, std::vector<Vec3>& V, double side) const;
     std::vector<int> join_films_across(ClusterSpec& spec) const;
     double film_area(const std::vector<Vec3>& V) const;
 
@@ -205,7 +204,7 @@ std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
             side_ = side;
             return V;
         }
-        if (fit_ && fit_beside_line(spec, V, side) &&
+        if (fit_ && surgery::fit_corners(spec, V, moved_, {n_, n_ + 1, n_ + 2}, side) &&
             film_area(V) >= 0.5 * std::sqrt(3.0) / 4 * side * side) {
             side_ = side, fitted_ = true;
             return V;
@@ -215,29 +214,6 @@ std::vector<Vec3> T1::place_film(const ClusterSpec& spec) {
     throw TopologyError(name_ + ": the T1 would turn a facet of surface " +
                         std::to_string(turned + 1) + " over (a sliver next to the line); the "
                         "mesh there is too fine across the line for it");
-}
-
-/// surgery::fit_corners of the new corners and of the vertices inside the line's films next
-/// to the line (a vertex between the line and a new corner would turn its facets over; the
-/// 200-grain network at t = 1.540 had one 0.015 from a line of 0.037), checking every facet
-/// of those vertices.
-bool T1::fit_beside_line(const ClusterSpec& spec, std::vector<Vec3>& V, double side) const {
-    std::vector<surgery::MovedFacet> checked = moved_;
-    std::vector<int> movable{n_, n_ + 1, n_ + 2};
-    const std::vector<int> rank = surgery::vertex_ranks(c_);
-    const std::set<int> on_line(seg_.begin(), seg_.end());
-    for (int i = 0; i < 3; ++i) {
-        std::set<int> beside;
-        for (const Tri& t : c_.surface(films_[i]).triangles)
-            if (std::any_of(t.begin(), t.end(), [&](int v) { return on_line.count(v) > 0; }))
-                for (int v : t)
-                    if (!on_line.count(v) && rank[v] == 0) beside.insert(v);
-        for (int v : beside) {
-            movable.push_back(v);
-            surgery::add_facets_at(spec, V, films_[i], v, checked);
-        }
-    }
-    return surgery::fit_corners(spec, V, checked, movable, side);
 }
 
 /// The area of the new film at positions V (its corners n_, n_ + 1, n_ + 2 are in one frame).

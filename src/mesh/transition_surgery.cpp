@@ -292,22 +292,6 @@ bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
     return false;
 }
 
-void add_facets_at(const ClusterSpec& spec, const std::vector<Vec3>& V, int si, int v,
-                   std::vector<MovedFacet>& moved) {
-    std::set<int> held;
-    for (const MovedFacet& m : moved)
-        if (m.surface == si) held.insert(m.facet);
-    const auto& tris = spec.surfaces[si].triangles;
-    for (int f = 0; f < static_cast<int>(tris.size()); ++f) {
-        if (held.count(f) || std::find(tris[f].begin(), tris[f].end(), v) == tris[f].end())
-            continue;
-        MovedFacet m{si, f, Vec3::Zero()};
-        const std::array<Vec3, 3> x = moved_corners(spec, V, m);
-        m.area = (x[1] - x[0]).cross(x[2] - x[0]);
-        moved.push_back(m);
-    }
-}
-
 bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vector<MovedFacet>& moved,
                  const std::vector<int>& movable, double max_shift) {
     constexpr double kMargin = 0.01; // height over the opposite edge, in the edge's length
@@ -319,13 +303,8 @@ bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vecto
         for (const MovedFacet& m : moved) {
             const Tri& t = spec.surfaces[m.surface].triangles[m.facet];
             const Vec3 n = m.area.normalized();
-            // a facet with several movable corners (a corner and a vertex beside it) shares
-            // the move among them: each takes its part of what is left
-            int sharing = 0;
-            for (int k = 0; k < 3; ++k) sharing += start.count(t[k]) ? 1 : 0;
             for (int k = 0; k < 3; ++k) {
                 if (!start.count(t[k])) continue;
-                const int share = sharing--;
                 const std::array<Vec3, 3> x = moved_corners(spec, V, m);
                 const Vec3& y1 = x[(k + 1) % 3];
                 const Vec3& y2 = x[(k + 2) % 3];
@@ -334,7 +313,7 @@ bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vecto
                 const double value = g.dot(x[k]) + n.dot(y1.cross(y2));
                 const double wanted = kMargin * (y1 - y2).squaredNorm();
                 if (value >= wanted || g.squaredNorm() == 0) continue;
-                V[t[k]] += (wanted - value) / (share * g.squaredNorm()) * g;
+                V[t[k]] += (wanted - value) / g.squaredNorm() * g;
                 moved_any = true;
             }
         }

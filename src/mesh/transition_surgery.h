@@ -99,11 +99,6 @@ bool turns_a_facet(const ClusterSpec& spec, const std::vector<Vec3>& V,
 bool fit_corners(const ClusterSpec& spec, std::vector<Vec3>& V, const std::vector<MovedFacet>& moved,
                  const std::vector<int>& movable, double max_shift);
 
-/// The facets of surface si of spec at vertex v that `moved` does not hold, appended to it
-/// with their areas at V: fit_corners may then move v too, and checks every facet it moves.
-void add_facets_at(const ClusterSpec& spec, const std::vector<Vec3>& V, int si, int v,
-                   std::vector<MovedFacet>& moved);
-
 /// Surface `gone`'s facets join surface `keep` in spec (c's surface ids); both lie between
 /// body k and another cell, and where k gives them opposite signs gone's facets are turned to
 /// face keep's way. `gone` keeps its (now doubled) facets until remove_surfaces.

@@ -369,6 +369,7 @@ class Run {
         std::optional<TopologyEvent> e;
         junctions_.new_look();
         caps_relaxed_ = false;
+        unresolved_refused_.clear();
         UpkeepTurns turns;
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
@@ -376,12 +377,19 @@ class Run {
                 (split_edges() || transition_junction(true) || transition_junction(false)))
                 continue;
             e = watch_.check(c_, r_.steps);
-            if (!e || !o_.transitions || made >= kMaxTransitionsPerStep) break;
+            if (!e || !o_.transitions) break;
+            if (made >= kMaxTransitionsPerStep) {
+                // transitions that cycle at a defect often circle a cell the mesh no longer
+                // resolves: that cell may still go, once
+                if (made == kMaxTransitionsPerStep && absorb_unresolved_grain(*e)) continue;
+                break;
+            }
             if (e->kind == "vanishing body" && pop(*e)) continue;
             if (!mend(*e, turns) && !absorb_unresolved_grain(*e)) break;
         }
         if (e && defer(*e)) e.reset();
         if (e && !junctions_.refused().empty()) e->message += "; " + junctions_.refused();
+        if (e && !unresolved_refused_.empty()) e->message += "; " + unresolved_refused_;
         if (!e && o_.transitions) junctions_.remember(c_, original_body_);
         if (!e) {
             if (watch_.tests_crossings(r_.steps)) uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
@@ -458,10 +466,10 @@ class Run {
         const int cell = unresolved_cell_near(c_, e.surface, e.facet);
         if (cell < 0) return false;
         TopologyEvent vanishing{"vanishing body", "body " + std::to_string(cell + 1) +
-                                    " (below the mesh's resolution) at " + e.message};
+                                    ", below the mesh's resolution beside the defect"};
         vanishing.body = cell;
         if (pop(vanishing)) return true;
-        e.message += "; " + vanishing.message;
+        unresolved_refused_ = vanishing.message; // the stop's message will say why
         return false;
     }
 
@@ -727,7 +735,8 @@ class Run {
     double tau_scale_ = 1; // the planned step over the option's tau (below 1 after a retry)
     /// Times the upkeeps are gone through for one defect that none of them mends.
     static constexpr int kPassesAtOneDefect = 2;
-    bool caps_relaxed_ = false; // relax_caps_once made its move in this step's look
+    bool caps_relaxed_ = false;
+    std::string unresolved_refused_; // why a cell below the mesh's resolution could not go // relax_caps_once made its move in this step's look
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();

@@ -347,26 +347,5 @@ TEST(FitCorners, KeepsAGoodCornerAndRefusesAFarOne) {
     EXPECT_FALSE(surgery::fit_corners(far.spec, far.V, far.moved, {4}, 1.0));
 }
 
-// A rim vertex pushed to the far side (0 at x = -0.995) leaves the corner no place that keeps
-// every facet: fitting the corner alone fails. Made movable with its other facets watched
-// (add_facets_at, as the T1 does for the vertices beside its line), the two move together
-// and nothing turns.
-TEST(FitCorners, MovesARimVertexWhereTheCornerAloneCannot) {
-    Fan f = square_fan({0.2, 0.1, 0});
-    f.V[0] = {-0.995, 0, 0};
-    f.V.push_back({1.5, 0, 0});
-    f.spec.surfaces[0].triangles.push_back({0, 5, 1});
-    f.spec.surfaces[0].triangles.push_back({3, 5, 0});
-    std::vector<Vec3> alone = f.V;
-    EXPECT_FALSE(surgery::fit_corners(f.spec, alone, f.moved, {4}, 3.0));
-    std::vector<surgery::MovedFacet> watched = f.moved;
-    surgery::add_facets_at(f.spec, f.V, 0, 0, watched);
-    ASSERT_EQ(watched.size(), f.moved.size() + 2); // the two facets at 0 off the fan
-    ASSERT_FALSE(surgery::turns_a_facet(f.spec, f.V, {watched.begin() + 4, watched.end()}));
-    ASSERT_TRUE(surgery::fit_corners(f.spec, f.V, watched, {4, 0}, 3.0));
-    EXPECT_FALSE(surgery::turns_a_facet(f.spec, f.V, watched));
-    EXPECT_GT(f.V[0].x(), -0.995); // the rim vertex moved towards the corner's side
-}
-
 } // namespace
 } // namespace froth
