@@ -468,7 +468,11 @@ class Run {
         TopologyEvent vanishing{"vanishing body", "body " + std::to_string(cell + 1) +
                                     ", below the mesh's resolution beside the defect"};
         vanishing.body = cell;
-        if (pop(vanishing)) return true;
+        if (pop(vanishing)) {
+            r_.events.back().where += " (below the mesh's resolution, beside a defect the "
+                                      "upkeep could not mend)";
+            return true;
+        }
         unresolved_refused_ = vanishing.message; // the stop's message will say why
         return false;
     }
@@ -735,8 +739,8 @@ class Run {
     double tau_scale_ = 1; // the planned step over the option's tau (below 1 after a retry)
     /// Times the upkeeps are gone through for one defect that none of them mends.
     static constexpr int kPassesAtOneDefect = 2;
-    bool caps_relaxed_ = false;
-    std::string unresolved_refused_; // why a cell below the mesh's resolution could not go // relax_caps_once made its move in this step's look
+    bool caps_relaxed_ = false; // relax_caps_once made its move in this step's look
+    std::string unresolved_refused_; // why a cell below the mesh's resolution could not go
     bool written_last_ = true; // the state outputs hold the current state
     int frames_ = 0;
     Clock::time_point last_draw_ = Clock::now();

@@ -163,6 +163,7 @@ T.assert_equal(rn.stop_reason, "steps done", "with them the run goes on", rn.sto
 T.assert_equal(#rn.events, 1, "through one transition")
 local ev = rn.events[1]
 T.assert_equal(ev.kind, "absorb body", "the thin cell joins a neighbour", ev.where)
+T.assert_true(ev.where:find("below the mesh's resolution", 1, true) ~= nil, "the event says why", ev.where)
 T.assert_equal(ev.body, 2, "body 2")
 T.assert_equal(ev.into, 4, "the one it shares the most film with: its roof and walls")
 T.assert_true(ev.energy_after < ev.energy_before, "the energy falls", ev.where)
