@@ -99,11 +99,13 @@ int unresolved_cell_near(const Cluster& c, int surface, int facet) {
     };
     const Vec3 at = centre(surface, facet);
     const double edge = mean_edge_length(c);
+    const Eigen::Matrix3d to_lattice =
+        c.periodic() ? Eigen::Matrix3d(c.period().inverse()) : Eigen::Matrix3d::Zero();
     const auto within = [&](int b) { // a facet centre of body b within two mean edges
         for (const BodyFace& face : c.bodies()[b].faces)
             for (int f = 0; f < static_cast<int>(c.surface(face.surface).triangles.size()); ++f) {
                 Vec3 d = centre(face.surface, f) - at;
-                if (c.periodic()) d -= c.period() * (c.period().inverse() * d).array().round().matrix();
+                if (c.periodic()) d -= c.period() * (to_lattice * d).array().round().matrix();
                 if (d.norm() < 2 * edge) return true;
             }
         return false;

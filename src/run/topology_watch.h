@@ -52,6 +52,7 @@ struct EdgeLengths {
     double mean = 0, longest = 0;
 };
 EdgeLengths edge_lengths(const Cluster& c);
+double mean_edge_length(const Cluster& c); ///< edge_lengths(c).mean
 
 /// The smallest cell within two mean edges of facet `facet` of surface `surface` (facet
 /// centres, across a periodic box the nearest image) whose volume is below both a ball of the
@@ -62,7 +63,6 @@ int unresolved_cell_near(const Cluster& c, int surface, int facet);
 struct FacetCrossing; // checks/self_intersection.h
 /// "facet 3 of surface 2 crosses facet 7 of surface 5" (geometry.h's facet_name of each).
 std::string crossing_text(const FacetCrossing& x);
-double mean_edge_length(const Cluster& c); ///< edge_lengths(c).mean
 
 /// Where a T1, an inverse T1 or a lens's or disc's collapse can act: a triple line between two
 /// distinct quadruple points, a triangular film (bounded by three such lines, between two
