@@ -1,6 +1,7 @@
 // Mesh upkeep (transitions.h, split_long_edges): Evolver's `l`, the split of edges that a
 // growing film has stretched, without changing the cluster's topology; and
-// split_films_emptied_by_t1, the same splits on the sides of a one-facet film beside a T1.
+// split_films_emptied_by_t1 and split_films_emptied_by_collapse, the same splits on the sides
+// of a film that a T1 or a film's collapse would leave without a facet.
 //
 // An edge (a, b) gets its midpoint m; each facet (a, b, q) at it (two inside a film, three
 // along a triple line) becomes (a, m, q) and (m, b, q) in the same orientation, so the
@@ -126,6 +127,42 @@ void part_folds(const std::vector<Tri>& tris, const std::set<int>& on_line,
         if (starts[w] > 1 || ends[w] > 1) sides.insert(std::minmax(v, w));
 }
 
+/// Adds to `sides` the other edges of the films among `films` whose every facet has two
+/// corners in `collapsing`: a collapse of those vertices to one point leaves such a film (a
+/// triangle of one facet on the collapsing line, say) without a facet.
+void add_sides_of_emptied_films(const Cluster& c, const std::set<int>& collapsing,
+                                const std::vector<int>& films, std::set<EdgeKey>& sides) {
+    const auto corners_collapsing = [&](const Tri& t) {
+        return std::count_if(t.begin(), t.end(), [&](int v) { return collapsing.count(v) > 0; });
+    };
+    for (int si : films) {
+        const auto& tris = c.surface(si).triangles;
+        const bool emptied = std::all_of(tris.begin(), tris.end(),
+                                         [&](const Tri& t) { return corners_collapsing(t) >= 2; });
+        if (!emptied) continue;
+        for (const Tri& t : tris)
+            for (int k = 0; k < 3; ++k)
+                if (!collapsing.count(t[k]) || !collapsing.count(t[(k + 1) % 3]))
+                    sides.insert(std::minmax(t[k], t[(k + 1) % 3]));
+    }
+}
+
+/// The edges `sides` split at their midpoints: one pass splits an edge per facet, so a
+/// facet's two sides take two passes, and facets that share edges to split may take more
+/// (a split edge is gone, so each pass splits one or ends). None if no edge could be split.
+std::optional<Cluster> split_sides(const Cluster& c, const std::set<EdgeKey>& sides) {
+    std::optional<Cluster> out;
+    for (std::size_t pass = 0; pass < sides.size(); ++pass) {
+        const Cluster& from = out ? *out : c;
+        EdgeSplitResult r = split_edges_where(from, [&](int a, int b, double) {
+            return sides.count({a, b}) > 0;
+        });
+        if (!r.cluster) break;
+        out = std::move(r.cluster);
+    }
+    return out;
+}
+
 } // namespace
 
 namespace surgery {
@@ -147,20 +184,8 @@ std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line,
                                                  bool part_common_neighbours) {
     const TripleLine& tl = c.triple_lines().at(line);
     const std::set<int> on_line(tl.vertices.begin(), tl.vertices.end());
-    const auto corners_on_line = [&](const Tri& t) {
-        return std::count_if(t.begin(), t.end(), [&](int v) { return on_line.count(v) > 0; });
-    };
     std::set<EdgeKey> sides; // the other edges of the films the T1 would empty
-    for (int si : tl.surfaces) {
-        const auto& tris = c.surface(si).triangles;
-        const bool emptied = std::all_of(tris.begin(), tris.end(),
-                                         [&](const Tri& t) { return corners_on_line(t) >= 2; });
-        if (!emptied) continue;
-        for (const Tri& t : tris)
-            for (int k = 0; k < 3; ++k)
-                if (!on_line.count(t[k]) || !on_line.count(t[(k + 1) % 3]))
-                    sides.insert(std::minmax(t[k], t[(k + 1) % 3]));
-    }
+    add_sides_of_emptied_films(c, on_line, {tl.surfaces.begin(), tl.surfaces.end()}, sides);
     // a vertex w joined to a through a film of the fourth cell D there and to b through one of
     // E's: after the T1 both films would have the edge from w to a new corner, which with the
     // line's film beside it would be an edge of four films (the 200-grain network stopped so
@@ -188,17 +213,22 @@ std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line,
         for (int si : tl.surfaces) part_folds(c.surface(si).triangles, on_line, sides);
     }
     if (sides.empty()) return std::nullopt;
-    // one pass splits an edge per facet: a facet's two sides take two
-    std::optional<Cluster> out;
-    for (int pass = 0; pass < 2; ++pass) {
-        const Cluster& from = out ? *out : c;
-        EdgeSplitResult r = split_edges_where(from, [&](int a, int b, double) {
-            return sides.count({a, b}) > 0;
-        });
-        if (!r.cluster) break;
-        out = std::move(r.cluster);
+    return split_sides(c, sides);
+}
+
+std::optional<Cluster> split_films_emptied_by_collapse(const Cluster& c, int film) {
+    std::set<EdgeKey> sides;
+    for (const TripleLine& tl : c.triple_lines()) {
+        if (std::find(tl.surfaces.begin(), tl.surfaces.end(), film) == tl.surfaces.end()) continue;
+        // the film itself goes; the others along this side lose the facets on it
+        std::vector<int> beside;
+        for (int si : tl.surfaces)
+            if (si != film) beside.push_back(si);
+        add_sides_of_emptied_films(c, std::set<int>(tl.vertices.begin(), tl.vertices.end()),
+                                   beside, sides);
     }
-    return out;
+    if (sides.empty()) return std::nullopt;
+    return split_sides(c, sides);
 }
 
 } // namespace froth

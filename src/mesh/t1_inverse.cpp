@@ -408,6 +408,16 @@ Cluster InverseT1::run(TransitionRecord* record) {
     return r;
 }
 
+/// The collapse of `film` with `sides` sides; a film along its border that it would leave
+/// without a facet has its other edges split first (as before a T1), which keeps the film's
+/// id.
+Cluster collapse_film(const Cluster& c, int film, int sides, double min_length,
+                      double smallest_length, bool fit, TransitionRecord* record) {
+    const std::optional<Cluster> split = split_films_emptied_by_collapse(c, film);
+    return InverseT1(split ? *split : c, film, sides, min_length, smallest_length, fit)
+        .run(record);
+}
+
 } // namespace
 
 Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record,
@@ -415,7 +425,7 @@ Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record,
     if (surface < 0 || surface >= c.n_surfaces())
         throw InvalidInput("t1_inverse: surface " + std::to_string(surface + 1) + " does not "
                            "exist (the cluster has " + std::to_string(c.n_surfaces()) + ")");
-    return InverseT1(c, surface, 3, min_length, smallest_length, fit_corners).run(record);
+    return collapse_film(c, surface, 3, min_length, smallest_length, fit_corners, record);
 }
 
 Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord* record,
@@ -424,7 +434,7 @@ Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord*
         throw InvalidInput("collapse_two_sided_film: surface " + std::to_string(surface + 1) +
                            " does not exist (the cluster has " + std::to_string(c.n_surfaces()) +
                            ")");
-    return InverseT1(c, surface, 2, min_length, 0, fit_corners).run(record);
+    return collapse_film(c, surface, 2, min_length, 0, fit_corners, record);
 }
 
 Cluster collapse_disc_film(const Cluster& c, int surface, TransitionRecord* record,
@@ -434,7 +444,7 @@ Cluster collapse_disc_film(const Cluster& c, int surface, TransitionRecord* reco
                            " does not exist (the cluster has " + std::to_string(c.n_surfaces()) +
                            ")");
     if (by_caps) return surgery::cap_disc_film(c, surface, record);
-    return InverseT1(c, surface, 1, min_length, 0, fit_corners).run(record);
+    return collapse_film(c, surface, 1, min_length, 0, fit_corners, record);
 }
 
 Cluster close_disc_film(const Cluster& c, int surface, TransitionRecord* record,

@@ -295,4 +295,12 @@ EdgeSplitResult split_long_edges(const Cluster& c, double max_length);
 std::optional<Cluster> split_films_emptied_by_t1(const Cluster& c, int line,
                                                  bool part_common_neighbours = false);
 
+/// Before the collapse of film `film` (t1_film_to_line, collapse_two_sided_film,
+/// collapse_disc_film, which call it): along each triple line bounding it, the other films
+/// whose every facet has two corners on that line, which the collapse would leave without a
+/// facet (a one-facet film at a corner, as a T1 of a short line can make), get their other
+/// edges split as split_films_emptied_by_t1 does. None if no film is such. Vertex and surface
+/// ids are kept.
+std::optional<Cluster> split_films_emptied_by_collapse(const Cluster& c, int film);
+
 } // namespace froth

@@ -224,6 +224,54 @@ TEST(SplitFilmsEmptiedByT1, PartsAFilmThatWouldFoldOverTheLine) {
     EXPECT_EQ(t1.n_surfaces(), c.n_surfaces() + 1);
 }
 
+int line_with_vertices(const Cluster& c, const std::vector<int>& vertices) {
+    for (std::size_t l = 0; l < c.triple_lines().size(); ++l)
+        if (c.triple_lines()[l].vertices == vertices) return static_cast<int>(l);
+    return -1;
+}
+
+// The T1 of the line between corners 0 and 2 of four_cells, then that of the line 1-6-2 of
+// the result, leave film 6 a triangle (corners 8, 9, 13) with the first T1's film (surface 11,
+// one facet, 8-9-10) on its side 8-9: the 200-grain network's stop at t = 1.044, where an
+// inverse T1 would have left the film a T1 had just made without a facet. Its sides off the
+// line are split first (2 new vertices, 3 facets; nothing else changes), and the inverse T1
+// goes; without the splits it failed ("surface 10 has no facets": the film beside, numbered
+// after the collapsed film went).
+TEST(SplitFilmsEmptiedByCollapse, SplitsAOneFacetFilmBesideAnInverseT1) {
+    const Cluster c0(four_cells());
+    const Cluster c1 = t1_line_to_film(c0, line_between(c0, 0, 2));
+    const int second = line_with_vertices(c1, {1, 6, 2});
+    ASSERT_GE(second, 0);
+    const Cluster c = t1_line_to_film(c1, second);
+    const int film = 5, beside = 10;
+    ASSERT_EQ(c.surface(beside).triangles.size(), 1u);
+    int sides = 0;
+    for (const TripleLine& l : c.triple_lines())
+        sides += static_cast<int>(std::count(l.surfaces.begin(), l.surfaces.end(), film));
+    ASSERT_EQ(sides, 3);
+
+    const std::optional<Cluster> r = split_films_emptied_by_collapse(c, film);
+    ASSERT_TRUE(r.has_value());
+    EXPECT_EQ(r->n_vertices(), c.n_vertices() + 2);
+    for (int v = 0; v < c.n_vertices(); ++v) EXPECT_EQ(r->position(v), c.position(v));
+    EXPECT_EQ(r->surface(beside).triangles.size(), 3u);
+    EXPECT_EQ(r->surface(film).triangles, c.surface(film).triangles);
+    EXPECT_EQ(r->quadruple_points(), c.quadruple_points());
+    EXPECT_NEAR(energy(*r), energy(c), 1e-13);
+    const std::vector<double> before = body_volumes(c), after = body_volumes(*r);
+    for (std::size_t b = 0; b < before.size(); ++b) EXPECT_NEAR(after[b], before[b], 1e-14);
+    // the second T1's film (11 12 13): every film along it keeps a facet off its side
+    EXPECT_FALSE(split_films_emptied_by_collapse(c, 11).has_value());
+
+    TransitionRecord record;
+    const Cluster t = t1_film_to_line(c, film, &record);
+    EXPECT_EQ(record.kind, "inverse T1");
+    EXPECT_EQ(t.n_surfaces(), c.n_surfaces() - 1);
+    EXPECT_EQ(t.surface(beside - 1).triangles.size(), 2u); // the facet on the line went
+    // its three corners go, the two ends of the new line come
+    EXPECT_EQ(t.quadruple_points().size(), c.quadruple_points().size() - 1);
+}
+
 } // namespace
 } // namespace froth
 
