@@ -283,9 +283,9 @@ EdgeSplitResult split_long_edges(const Cluster& c, double max_length);
 /// Before the T1 of triple line `line`: the films at the line whose every facet has two
 /// corners on it (a triangular film of one facet with the line as a side), which the T1
 /// would leave without a facet, get their other edges split at their midpoints (as
-/// split_long_edges; each such facet's two other sides, in two passes), so that the T1 leaves
-/// them a lens of two facets. None if no film is such. Vertex ids are kept (the midpoints
-/// come after them). With part_common_neighbours, also the edges (a, w) and (b, w) from the
+/// split_long_edges; each such facet's two other sides, one edge per facet a pass, in as many
+/// passes as that takes), so that the T1 leaves them a lens of two facets. None if no film is
+/// such. Vertex ids are kept (the midpoints come after them). With part_common_neighbours, also the edges (a, w) and (b, w) from the
 /// line's ends to a vertex w joined to a through a film of the fourth cell at a and to b
 /// through one of the fourth cell at b (the T1 may give both films the edge from w to one new
 /// corner, an edge of four films; t1_line_to_film with fit_corners splits them where the T1
