@@ -423,7 +423,9 @@ inline double cone_volume(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 /// The volume of one body at positions X: its signed facets' cones plus its lids (plus its
-/// volconst, if it has one). The one
+/// volconst, if it has one). A body without lids takes its cones from its first facet's first
+/// corner, not the origin: the sum is the same for a closed surface, and its round-off is that
+/// of the cell's size, not of its distance from the origin. The one
 /// volume kernel: the body orientation at construction, geometry's body_volumes and every
 /// report use it.
 double body_volume(const Cluster& c, const Body& body, const std::vector<Vec3>& X);
