@@ -202,6 +202,8 @@ struct EdgeCollapseCriteria {
     /// needle_angle degrees: a needle's short side (a film's corner squeezed against a
     /// quadruple point), or a flat cap's side from its flat corner to the nearer end of its
     /// long side (which the flips would mend, but not where that side is a triple line).
+    /// A needle whose tip is a triple line's vertex with the line's two edges as its sides (a
+    /// hairpin of the line) offers those sides too, as its short side joins two junctions.
     double needle_angle = 0;
     /// Film vertices with three neighbours collapse onto the neighbour of highest rank (their
     /// three facets become the triangle of the neighbours). Such a vertex beside a triple line,

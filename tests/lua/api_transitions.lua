@@ -433,6 +433,38 @@ do
                 {angle = 0})
 end
 
+-- 5b''. A hairpin of a triple line: the line E1 A T B E2 runs out from A to its tip T and back
+-- to B, 0.02 from A (the tip's corner 1.1 degrees). Film 1 is the strip between its arms (the
+-- needle (A, T, B) at the tip), film 3 the plane outside it, film 2 a ribbon standing on the
+-- line; the other vertices are fixed. The needle's short side A-B joins two line vertices across
+-- film 1 and cannot collapse; its sides from the tip run along the line, and the tip goes onto
+-- A, the nearer, which keeps its place (the 1000-cell foam's minimize stopped on such a needle).
+do
+  local V = {{-1, 0, 0}, {0, 0, 0}, {1, 0.008, 0}, {0, 0.02, 0}, {-1, 0.02, 0}} -- E1 A T B E2
+  for i = 1, 5 do V[5 + i] = {V[i][1], V[i][2], 1} end                         -- the ribbon's top
+  V[11], V[12], V[13], V[14] = {-1, -1, 0}, {2, -1, 0}, {2, 1, 0}, {-1, 1, 0}  -- the plane's rim
+  local E1, A, tip, B, E2, O1, O2, O3, O4 = 1, 2, 3, 4, 5, 11, 12, 13, 14
+  local ribbon = {}
+  for i = 1, 4 do
+    ribbon[#ribbon + 1] = {i, i + 1, i + 6}
+    ribbon[#ribbon + 1] = {i, i + 6, i + 5}
+  end
+  local c = froth.cluster{vertices = V, fixed = {1, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14},
+    surfaces = {{{A, tip, B}, {E1, A, B}, {E1, B, E2}}, ribbon,
+                {{E1, O1, A}, {O1, O2, A}, {A, O2, tip}, {O2, O3, tip}, {tip, O3, B}, {O3, O4, B},
+                 {B, O4, E2}}}}
+  local strip, plane = c:area(1), c:area(3)
+  T.assert_equal(#c:triple_lines()[1].vertices, 5, "the line has its tip")
+  local r = c:collapse_edges{needles = 5}
+  T.assert_equal(r.collapsed, 1, "the tip goes")
+  T.assert_equal(r.vertices, 13, "one vertex less")
+  T.assert_equal(#c:triple_lines(), 1, "one line")
+  T.assert_equal(#c:triple_lines()[1].vertices, 4, "without its tip")
+  T.assert_equal(table.concat(c:vertex(A), " "), "0.0 0.0 0.0", "A keeps its place")
+  T.assert_near(c:area(1), strip - 0.01, 1e-14, "the strip loses the needle (area 0.01)")
+  T.assert_near(c:area(3), plane + 0.01, 1e-14, "which the plane outside gains")
+end
+
 -- 5c. A film's corner squeezed at a quadruple point: four cells around a tetrahedron's centre q
 -- (six inner films, each with its two lines from q bent at their midpoints), and line 2's first
 -- vertex turned towards line 1's, so that the edge across film 1|2 between them is shorter
