@@ -266,6 +266,7 @@ class Minimizer {
             const EquilibriumState s = balance(first_variation(c_, P, pair_geometry(c_)));
             r.residual = s.residual, r.pressures = s.pressures;
         }
+        r.tau = tau_ / R2_;
         r.energy = energy(c_);
         r.volumes = body_volumes(c_);
         r.volume_error = max_target_deviation(c_, r.volumes);

@@ -59,6 +59,7 @@ struct MinimizeResult {
     double volume_error = 0; ///< max_b |V_b - V*_b| / V*_b
     int iterations = 0;      ///< accepted steps
     int rejected = 0;        ///< steps rejected (tau shrunk)
+    double tau = 0;          ///< the tau the next step would have tried, relative to R^2
     double wall_seconds = 0;
     bool converged = false;
     /// "converged", "max_iterations", "interrupted", "stalled: <why>", or "topology: <what>"
