@@ -1,12 +1,15 @@
 -- Regression: minimize with transitions goes on past a sliver its upkeep leaves. A 27-cell
--- Voronoi foam (seed 6, 5 Lloyd steps): after its transitions a facet below 0.1 degree is left
--- that no collapse or flip removes. Until 2026-12-06 the rounds stopped there (16 iterations);
--- now such a sliver (above 0.01 degree) is deferred: the next round starts with it, and the
--- rounds and their transitions go on to max_iterations. The relaxation stays a relaxation:
--- exact volumes, a lower energy, every Plateau point with its four lines, no crossing.
+-- Voronoi foam (seed 3, 5 Lloyd steps): after its transitions a facet below 0.1 degree is left
+-- that no collapse or flip removes, five times in 100 iterations. Until 2026-12-06 the rounds
+-- stopped at the first; now such a sliver (above 0.01 degree) is deferred: the next round
+-- starts with it, and the rounds and their transitions go on to max_iterations. The
+-- relaxation stays a relaxation: exact volumes, a lower energy, every Plateau point with its
+-- four lines, no crossing. (The case was seed 6 until its rounds started at the last round's
+-- tau, 2026-12-07: the runs are chaotic, and seed 6 then met a sliver below 0.01 degree after
+-- 97 iterations, the hard limit; seed 3 defers five slivers and reaches 100.)
 local T = require("froth.test")
 
-local start = froth.foam{n = 27, seed = 6, h = 0.4, lloyd = 5}
+local start = froth.foam{n = 27, seed = 3, h = 0.4, lloyd = 5}
 local c = start:clone()
 local r = c:minimize{max_iterations = 100, transitions = true}
 print(("%s after %d iterations in %d rounds, %d transitions, %d deferred, energy %.9g -> %.9g")
