@@ -9,9 +9,9 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace froth {
 namespace {
