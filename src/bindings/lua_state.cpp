@@ -5,6 +5,7 @@
 #include "bindings/lua_cluster.h"
 #include "bindings/lua_walls.h"
 #include "bindings/luax.h"
+#include "core/errors.h"
 #include "io/state_file.h"
 #include "run/evolve.h"
 
@@ -13,13 +14,14 @@
 namespace froth::lua {
 namespace {
 
-/// c:save(path): everything the cluster and its stepper need to continue (io/state_file.h).
+/// c:save(path): everything the cluster, its stepper and the transitions' memory need to
+/// continue (io/state_file.h).
 int l_save(lua_State* L) {
     ClusterHandle& h = check_cluster(L, 1);
     const std::string path = luaL_checkstring(L, 2);
     ChangeGuard change(L, h, "save"); // it drops the stepper's factorisations
     return guarded(L, [&] {
-        save_state(path, h.cluster, h.stepper);
+        save_state(path, h.cluster, h.stepper, &h.transitions);
         return 0;
     });
 }
@@ -137,6 +139,11 @@ int l_load(lua_State* L) {
                                    [&](int k, const std::string&) { return curves[k]; }};
         auto h = std::make_shared<ClusterHandle>(restore_cluster(state, given));
         h->stepper.restore_history(h->cluster, state.history);
+        try {
+            h->transitions = restore_transition_memory(state.transitions, h->cluster);
+        } catch (const InvalidInput& e) { // the file's fault: say which file
+            throw InvalidInput("load: '" + path + "': " + e.what());
+        }
         push<ClusterHandle>(L, std::move(h), kClusterType);
         return 1;
     });

@@ -73,6 +73,16 @@ void write_surface(io::TextBuffer& out, const Surface& s, const ClusterState::Ma
     out << '\n';
 }
 
+/// A section of named arrays (read_arrays reads it back).
+void write_arrays(io::TextBuffer& out, const char* section, const std::vector<NamedValues>& arrays) {
+    out << section << ' ' << static_cast<int>(arrays.size()) << '\n';
+    for (const NamedValues& a : arrays) {
+        out << "array " << a.name << ' ' << static_cast<int>(a.values.size()) << '\n';
+        for (double v : a.values)
+            out << v << '\n';
+    }
+}
+
 std::string state_text(const ClusterState& s) {
     io::TextBuffer out;
     out.reserve(80 * (s.spec.vertices.size() + 1));
@@ -141,12 +151,8 @@ std::string state_text(const ClusterState& s) {
                         out << corners[a][d] << (a == 2 && d == 2 ? '\n' : ' ');
         }
     }
-    out << "history " << static_cast<int>(s.history.size()) << '\n';
-    for (const NamedValues& a : s.history) {
-        out << "array " << a.name << ' ' << static_cast<int>(a.values.size()) << '\n';
-        for (double v : a.values)
-            out << v << '\n';
-    }
+    write_arrays(out, "history", s.history);
+    write_arrays(out, "transitions", s.transitions);
     out << "end\n";
     return out.str() + "checksum " + state_checksum(out.str()) + "\n";
 }
@@ -219,16 +225,20 @@ void read_curves(io::Tokens& t, ClusterState& s) {
     }
 }
 
-void read_history(io::Tokens& t, ClusterState& s) {
-    t.expect("history");
-    s.history.resize(t.count("history arrays", 3));
-    for (NamedValues& a : s.history) {
+/// A section of named arrays (`history`, `transitions`): its name and count, then per array
+/// "array <name> <length>" and the values.
+std::vector<NamedValues> read_arrays(io::Tokens& t, const std::string& section) {
+    t.expect(section.c_str());
+    std::vector<NamedValues> arrays(t.count((section + " arrays").c_str(), 3));
+    const std::string value = section + " value";
+    for (NamedValues& a : arrays) {
         t.expect("array");
         a.name = std::string(t.next("array name"));
         a.values.resize(t.count("array length", 1));
         for (double& v : a.values)
-            v = t.real("history value");
+            v = t.real(value.c_str());
     }
+    return arrays;
 }
 
 void read_period(io::Tokens& t, ClusterState& s) {
@@ -311,7 +321,8 @@ ClusterState parse_body(io::Tokens& t, long long version) {
         }
     }
     if (version >= 3) read_period(t, s);
-    read_history(t, s);
+    s.history = read_arrays(t, "history");
+    if (version >= 4) s.transitions = read_arrays(t, "transitions");
     t.expect("end");
     if (!t.at_end()) t.fail("text after 'end'");
     return s;

@@ -2,11 +2,12 @@
 /// froth's state files (c:save, froth.load; `.froth`): everything a cluster and its stepper need
 /// to continue a run bit for bit: positions, surfaces with their tensions, anisotropies and
 /// mobilities, bodies, walls (presets by their numbers, user functions by name), fixed
-/// vertices, time, the reference area and volumes, the target volumes, and the schemes'
-/// history (flows/stepper.h TimeStepper::history). Numbers are written in the shortest form
-/// that reads back to the same double; ids are 1-based as everywhere users see them.
+/// vertices, time, the reference area and volumes, the target volumes, the schemes' history
+/// (flows/stepper.h TimeStepper::history) and the transitions' memory (run/evolve.h). Numbers
+/// are written in the shortest form that reads back to the same double; ids are 1-based as
+/// everywhere users see them.
 ///
-/// The format is versioned text (first line "froth-state 1") ending in an FNV-1a 64 checksum of
+/// The format is versioned text (first line "froth-state 4") ending in an FNV-1a 64 checksum of
 /// everything before it: a truncated or edited file is refused before it is parsed, a file of a
 /// newer format is refused by its version, and the parser validates every count and id as the
 /// MSH reader does (io/tokens.h), so no file can crash or exhaust the process.
@@ -22,8 +23,9 @@
 namespace froth {
 
 /// 2 adds the bodies' volconst (format 1 files are read as bodies without one); 3 the period and
-/// facet offsets of a periodic cluster (formats 1 and 2 are read as clusters in space).
-inline constexpr int kStateFormatVersion = 3;
+/// facet offsets of a periodic cluster (formats 1 and 2 are read as clusters in space); 4 the
+/// memory of the transitions runs make (formats 1-3 are read without one: a fresh memory).
+inline constexpr int kStateFormatVersion = 4;
 
 /// The saved state, between a Cluster and its file.
 struct ClusterState {
@@ -42,6 +44,9 @@ struct ClusterState {
     double time = 0, initial_area = 0;
     std::vector<double> initial_volumes, target_volumes;
     std::vector<NamedValues> history;
+    /// What evolve with transitions remembers between calls (run/evolve.h TransitionMemory),
+    /// as named arrays; empty: none.
+    std::vector<NamedValues> transitions;
 };
 
 /// The state of c, with the stepper's history. \throw InvalidInput if a user wall's name holds

@@ -117,7 +117,7 @@ class Run {
             history_.push_back(history_row(make_report(c), 0));
             write_history(o.history, history_);
         }
-        if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper);
+        if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper, memory);
         write_frame(); // the start, so a bad path fails before any step
         if (!o.transitions) return;
         if (memory_ && memory_->junctions &&
@@ -166,15 +166,19 @@ class Run {
         }
         if (o_.progress) std::fprintf(o_.progress, "\r%90s\r", ""), std::fflush(o_.progress);
         r_.last = make_report(c_);
-        if (memory_) {
-            junctions_.carry_over(original_body_);
-            *memory_ = {junctions_, longest_edge_, transitions_made(), tau_scale_};
-        }
+        if (memory_) *memory_ = memory_now();
         r_.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
         return std::move(r_);
     }
 
   private:
+    /// The memory the next call would start from, were the run to end now.
+    TransitionMemory memory_now() const {
+        JunctionTransitions junctions = junctions_;
+        junctions.carry_over(original_body_);
+        return {std::move(junctions), longest_edge_, transitions_made(), tau_scale_};
+    }
+
     bool done() const {
         if (o_.steps >= 0) return r_.steps >= o_.steps;
         return c_.time() >= t_end_ - 1e-12 * o_.tau; // T reached up to round-off
@@ -702,7 +706,10 @@ class Run {
     /// checkpoint and the picture, each if asked for.
     void write_state_outputs() {
         if (series_) series_->add(c_.time(), c_, output_fields(c_));
-        if (!o_.checkpoint.empty()) save_state(o_.checkpoint, c_, stepper_);
+        if (!o_.checkpoint.empty()) {
+            const TransitionMemory memory = memory_now();
+            save_state(o_.checkpoint, c_, stepper_, o_.transitions ? &memory : nullptr);
+        }
         write_frame();
         written_last_ = true;
     }
@@ -748,8 +755,36 @@ class Run {
 
 } // namespace
 
-void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper) {
-    write_state_file(path, capture_state(c, stepper.history(c)));
+std::vector<NamedValues> save_transition_memory(const TransitionMemory& memory) {
+    std::vector<NamedValues> out;
+    if (!memory.junctions) return out;
+    memory.junctions->save(out);
+    out.push_back({"transitions.run",
+                   {memory.longest_edge, memory.transitions_made ? 1.0 : 0.0, memory.tau_scale}});
+    return out;
+}
+
+TransitionMemory restore_transition_memory(const std::vector<NamedValues>& arrays,
+                                           const Cluster& c) {
+    TransitionMemory m;
+    m.junctions = JunctionTransitions::restore(arrays, c.n_bodies());
+    const std::vector<double>* run = find_named(arrays, "transitions.run");
+    if (!m.junctions && !run) return m;
+    if (!m.junctions || !run || run->size() != 3 || !((*run)[0] >= 0 && (*run)[0] < 1e300) ||
+        ((*run)[1] != 0 && (*run)[1] != 1) || !((*run)[2] > 0 && (*run)[2] <= 1))
+        throw InvalidInput("transition memory: transitions.run must come with junctions.scalars "
+                           "and hold the longest edge, 0 or 1 and a tau scale in (0, 1]");
+    m.longest_edge = (*run)[0];
+    m.transitions_made = (*run)[1] == 1;
+    m.tau_scale = (*run)[2];
+    return m;
+}
+
+void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper,
+                const TransitionMemory* memory) {
+    ClusterState s = capture_state(c, stepper.history(c));
+    if (memory) s.transitions = save_transition_memory(*memory);
+    write_state_file(path, s);
     stepper.drop_factorizations();
 }
 

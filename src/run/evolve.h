@@ -123,9 +123,18 @@ struct TransitionMemory {
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& options,
                     TransitionMemory* memory = nullptr);
 
-/// Saves c and the stepper's history to a state file (c:save, evolve's checkpoints). The
-/// stepper then forgets its factorisations, so that this run and one restored from the file
-/// take the same next steps bit for bit. \throw IoError, InvalidInput (io/state_file.h)
-void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper);
+/// The memory as named arrays for a state file ("junctions.*" and "transitions.run"); empty
+/// before any call with transitions.
+std::vector<NamedValues> save_transition_memory(const TransitionMemory& memory);
+/// The memory save_transition_memory wrote, for cluster c (none saved: a fresh memory).
+/// \throw InvalidInput for arrays it does not write
+TransitionMemory restore_transition_memory(const std::vector<NamedValues>& arrays, const Cluster& c);
+
+/// Saves c, the stepper's history and the transitions' memory (if given) to a state file
+/// (c:save, evolve's checkpoints). The stepper then forgets its factorisations, so that this
+/// run and one restored from the file take the same next steps bit for bit.
+/// \throw IoError, InvalidInput (io/state_file.h)
+void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper,
+                const TransitionMemory* memory = nullptr);
 
 } // namespace froth

@@ -7,6 +7,7 @@
 #include "mesh/transitions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -102,6 +103,86 @@ void JunctionTransitions::carry_over(const std::vector<int>& original_body) {
     made_[0].clear(), made_[1].clear(), refused_.clear(), forced_refused_.clear();
     refusals_.clear();
     bodies_ = static_cast<int>(original_body.size());
+}
+
+namespace {
+
+/// The arrays of a memory's maps: per entry the number of cells, the cells (1-based body
+/// ids, 0 the outside) and the value.
+template <class Map> NamedValues map_array(const char* name, const Map& memory) {
+    NamedValues a{name, {}};
+    for (const auto& [cells, value] : memory) {
+        a.values.push_back(static_cast<double>(cells.size()));
+        for (int k : cells) a.values.push_back(k + 1);
+        a.values.push_back(static_cast<double>(value));
+    }
+    return a;
+}
+
+/// The map of map_array's array `name` (empty if there is none), checked.
+/// \throw InvalidInput
+template <class Value>
+std::map<std::vector<int>, Value> array_map(const std::vector<NamedValues>& in, const char* name,
+                                            int n_bodies, double least, double most) {
+    std::map<std::vector<int>, Value> out;
+    const std::vector<double>* a = find_named(in, name);
+    if (!a) return out;
+    const auto bad = [&](const std::string& what) {
+        return InvalidInput(std::string("transition memory: ") + name + ": " + what);
+    };
+    for (std::size_t i = 0; i < a->size();) {
+        const double n = (*a)[i++];
+        // n cells and the value after them
+        if (!(n >= 1 && n <= 5 && n == std::floor(n)) || i + static_cast<std::size_t>(n) >= a->size())
+            throw bad("an entry's length does not fit the array");
+        std::vector<int> cells;
+        for (int k = 0; k < static_cast<int>(n); ++k) {
+            const double id = (*a)[i++];
+            if (!(id >= 0 && id <= n_bodies && id == std::floor(id)))
+                throw bad("a body id out of range [0, " + std::to_string(n_bodies) + "]");
+            cells.push_back(static_cast<int>(id) - 1);
+        }
+        const double value = (*a)[i++];
+        if (!(value >= least && value <= most)) throw bad("a value out of range");
+        out.emplace(std::move(cells), static_cast<Value>(value));
+    }
+    return out;
+}
+
+} // namespace
+
+void JunctionTransitions::save(std::vector<NamedValues>& out) const {
+    out.push_back({"junctions.scalars",
+                   {fraction_, fit_corners_ ? 1.0 : 0.0, static_cast<double>(bodies_),
+                    static_cast<double>(look_)}});
+    out.push_back(map_array("junctions.line_sizes", line_sizes_));
+    out.push_back(map_array("junctions.film_sizes", film_sizes_));
+    out.push_back(map_array("junctions.line_products", products_[0]));
+    out.push_back(map_array("junctions.film_products", products_[1]));
+    out.push_back(map_array("junctions.contacts", contacts_));
+}
+
+std::optional<JunctionTransitions> JunctionTransitions::restore(const std::vector<NamedValues>& in,
+                                                                int n_bodies) {
+    const std::vector<double>* scalars = find_named(in, "junctions.scalars");
+    if (!scalars) return std::nullopt;
+    const auto& v = *scalars;
+    if (v.size() != 4 || !(v[0] > 0 && v[0] < 1) || (v[1] != 0 && v[1] != 1) ||
+        v[2] != n_bodies || !(v[3] >= 0 && v[3] < 1e9 && v[3] == std::floor(v[3])))
+        throw InvalidInput("transition memory: junctions.scalars must be a line fraction in "
+                           "(0, 1), 0 or 1, the number of bodies (" +
+                           std::to_string(n_bodies) + ") and a look count");
+    JunctionTransitions m(v[0], v[1] == 1);
+    m.bodies_ = n_bodies;
+    m.look_ = static_cast<int>(v[3]);
+    constexpr double kMost = 1e300;
+    m.line_sizes_ = array_map<double>(in, "junctions.line_sizes", n_bodies, 0, kMost);
+    m.film_sizes_ = array_map<double>(in, "junctions.film_sizes", n_bodies, 0, kMost);
+    m.products_[0] = array_map<double>(in, "junctions.line_products", n_bodies, -1, kMost);
+    m.products_[1] = array_map<double>(in, "junctions.film_products", n_bodies, -1, kMost);
+    m.contacts_ = array_map<int>(in, "junctions.contacts", n_bodies, m.look_ - kContactLooks,
+                                 m.look_);
+    return m;
 }
 
 void JunctionTransitions::new_look() {

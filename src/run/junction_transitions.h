@@ -15,6 +15,7 @@
 /// after, unless forced (an edge collapsing): at a tangle of small junctions a T1 next to an
 /// inverse T1 otherwise restored the film it removed, look after look.
 
+#include "core/types.h"
 #include "mesh/cluster.h"
 #include "run/topology_watch.h"
 
@@ -69,6 +70,16 @@ class JunctionTransitions {
     /// now (original_body: the original id of each body now), the junctions of popped bodies
     /// are forgotten.
     void carry_over(const std::vector<int>& original_body);
+    /// The memory, carried over (keys in the bodies' ids now), as named arrays "junctions.*"
+    /// for a state file (c:save), so that a loaded run makes the transitions the saving run
+    /// would have made; refusals and this look's products are not kept (carry_over drops
+    /// them too).
+    void save(std::vector<NamedValues>& out) const;
+    /// The memory save() wrote, for a cluster of n_bodies bodies; none if `in` holds no
+    /// "junctions.*" arrays. \throw InvalidInput if they are not what save() writes (a body id
+    /// out of range, a size that is not finite, a length that does not add up)
+    static std::optional<JunctionTransitions> restore(const std::vector<NamedValues>& in,
+                                                      int n_bodies);
     /// True if this memory, carried over, fits a run on a cluster of n_bodies bodies with this
     /// min_line_fraction.
     bool fits(int n_bodies, double min_line_fraction) const {

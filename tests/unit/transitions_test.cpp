@@ -1,16 +1,18 @@
 // Topological transitions (mesh/transitions.h): the pop of a vanishing cell; the splits
-// before a T1 that would empty a film.
+// before a T1 that would empty a film; the runs' memory of them in a state file.
 #include "core/errors.h"
 #include "expect_error.h"
 #include "geometry/geometry.h"
 #include "mesh/transition_surgery.h"
 #include "mesh/transitions.h"
+#include "run/evolve.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -393,6 +395,73 @@ TEST(FitCorners, KeepsAGoodCornerAndRefusesAFarOne) {
     EXPECT_EQ(good.V[4], Vec3(0.1, -0.2, 0));
     Fan far = square_fan({3, 3, 0});
     EXPECT_FALSE(surgery::fit_corners(far.spec, far.V, far.moved, {4}, 1.0));
+}
+
+/// A transition memory as a state file holds it, for a cluster of 2 bodies (1-based, 0 the
+/// outside): a line and a triangular film with their sizes, a product not yet measured and a
+/// contact two looks old.
+std::vector<NamedValues> saved_memory() {
+    return {{"junctions.scalars", {0.2, 1, 2, 7}},
+            {"junctions.line_sizes", {5, 0, 1, 2, 0, 1, 0.04}},
+            {"junctions.film_sizes", {5, 1, 2, 0, 1, 2, 0.3, 5, 2, 2, 0, 1, 2, 0.25}},
+            {"junctions.line_products", {5, 0, 1, 2, 0, 1, -1}},
+            {"junctions.film_products", {}},
+            {"junctions.contacts", {2, 1, 2, 5}},
+            {"transitions.run", {0.31, 1, 0.5}}};
+}
+
+TEST(TransitionMemory, ReadsBackWhatItWrites) {
+    const Cluster c(nested_spheres(0.4)); // only its number of bodies counts
+    ASSERT_EQ(c.n_bodies(), 2);
+    const std::vector<NamedValues> saved = saved_memory();
+    const TransitionMemory m = restore_transition_memory(saved, c);
+    ASSERT_TRUE(m.junctions.has_value());
+    EXPECT_EQ(m.longest_edge, 0.31);
+    EXPECT_TRUE(m.transitions_made);
+    EXPECT_EQ(m.tau_scale, 0.5);
+    EXPECT_TRUE(m.junctions->fits(2, 0.2));
+    const std::vector<NamedValues> again = save_transition_memory(m);
+    ASSERT_EQ(again.size(), saved.size());
+    for (std::size_t k = 0; k < saved.size(); ++k) {
+        EXPECT_EQ(again[k].name, saved[k].name);
+        EXPECT_EQ(again[k].values, saved[k].values) << saved[k].name;
+    }
+    EXPECT_FALSE(restore_transition_memory({}, c).junctions.has_value()); // a format 3 file
+}
+
+/// Every value of a saved memory replaced by hostile ones, and every array cut short: each is
+/// read or refused with InvalidInput naming the array, never anything else (run under ASan in
+/// CI, so a bad read aborts).
+TEST(TransitionMemory, RefusesDamagedArraysByName) {
+    const Cluster c(nested_spheres(0.4));
+    ASSERT_TRUE(restore_transition_memory(saved_memory(), c).junctions.has_value());
+    const double hostile[] = {std::numeric_limits<double>::quiet_NaN(), INFINITY, -INFINITY, -2,
+                              -1, 0, 0.5, 3, 6, 1e9, 1e300};
+    int refused = 0, read = 0;
+    const auto attempt = [&](const std::vector<NamedValues>& arrays) {
+        try {
+            restore_transition_memory(arrays, c);
+            ++read;
+        } catch (const InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("transition memory: "), std::string::npos);
+            ++refused;
+        }
+    };
+    for (std::size_t a = 0; a < saved_memory().size(); ++a) {
+        for (std::size_t i = 0; i < saved_memory()[a].values.size(); ++i)
+            for (double x : hostile) {
+                std::vector<NamedValues> arrays = saved_memory();
+                arrays[a].values[i] = x;
+                attempt(arrays);
+            }
+        std::vector<NamedValues> cut = saved_memory();
+        if (!cut[a].values.empty()) cut[a].values.pop_back(), attempt(cut);
+        std::vector<NamedValues> without = saved_memory();
+        without.erase(without.begin() + static_cast<std::ptrdiff_t>(a));
+        attempt(without);
+    }
+    EXPECT_GT(refused, 100);
+    EXPECT_GT(read, 10); // a size of 0.5 or 6 and the like is a valid memory
 }
 
 } // namespace
