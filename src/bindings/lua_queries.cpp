@@ -260,10 +260,38 @@ int l_grain_measures(lua_State* L) {
     });
 }
 
+/// c:film_angles() -> {{vertex, surfaces = {a, b, c}, angles = {.., .., ..}, young_error,
+/// force_imbalance}, ...}: the report's film angles vertex by vertex (geometry.h
+/// triple_line_vertex_angles); angles[i] faces surfaces[i].
+int l_film_angles(lua_State* L) {
+    const Cluster& c = self(L).cluster;
+    return guarded(L, [&] {
+        const std::vector<LineVertexAngles> all = triple_line_vertex_angles(c);
+        lua_createtable(L, static_cast<int>(all.size()), 0);
+        for (std::size_t k = 0; k < all.size(); ++k) {
+            const LineVertexAngles& a = all[k];
+            lua_createtable(L, 0, 5);
+            set_integer(L, "vertex", a.vertex + 1);
+            set_integers(L, "surfaces", a.surfaces, 1);
+            lua_createtable(L, 3, 0);
+            for (int i = 0; i < 3; ++i) {
+                lua_pushnumber(L, a.angles[i]);
+                lua_rawseti(L, -2, i + 1);
+            }
+            lua_setfield(L, -2, "angles");
+            set_number(L, "young_error", a.young_error);
+            set_number(L, "force_imbalance", a.force_imbalance);
+            lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+        }
+        return 1;
+    });
+}
+
 const luaL_Reg methods[] = {
     {"vertices", l_vertices},     {"facets", l_facets}, {"edges", l_edges},
     {"set_vertex", l_set_vertex}, {"fix", l_fix},       {"unfix", l_unfix},
     {"fixed", l_fixed},           {"grain_measures", l_grain_measures},
+    {"film_angles", l_film_angles},
     {nullptr, nullptr},
 };
 

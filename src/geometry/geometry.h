@@ -95,6 +95,20 @@ struct AngleStats {
 /// chords alone are biased by about h * curvature / 2 (2-3 degrees on the default scene).
 AngleStats triple_line_angles(const Cluster& c);
 
+/// The film angles at one line vertex (triple_line_angles gathers them).
+struct LineVertexAngles {
+    int vertex = -1;
+    std::array<int, 3> surfaces{}; ///< the line's surfaces, increasing
+    /// angles[i]: the angle (degrees) between the two films other than surfaces[i], the one
+    /// that faces film i
+    std::array<double, 3> angles{};
+    double young_error = 0;     ///< max_i |angles[i] - Young's angle| (NaN: no balance)
+    double force_imbalance = 0; ///< of (2.3), as AngleStats::force_imbalance
+};
+/// The film angles at every line vertex that is neither a quadruple point nor a line end, in
+/// vertex order.
+std::vector<LineVertexAngles> triple_line_vertex_angles(const Cluster& c);
+
 /// Angles between the triple lines leaving each quadruple point (6 per point with 4 lines;
 /// arccos(-1/3) = 109.47 degrees at equilibrium). Line directions from quadratic extrapolation
 /// through the next two vertices of each line.

@@ -158,9 +158,9 @@ int next_on_line(const Cluster& c, int v, int e) {
 
 } // namespace
 
-AngleStats triple_line_angles(const Cluster& c) {
+std::vector<LineVertexAngles> triple_line_vertex_angles(const Cluster& c) {
     const PairFacets pf = pair_facets(c);
-    AngleAccumulator acc;
+    std::vector<LineVertexAngles> out;
     for (int v = 0; v < c.n_vertices(); ++v) {
         const std::vector<int> edges = c.vertex_junction_edges(v);
         if (edges.size() != 2) continue; // not on a line, or a quadruple point / line end
@@ -182,15 +182,31 @@ AngleStats triple_line_angles(const Cluster& c) {
             dir[j] = film_direction(two_ring(c, pf, v, e0.surfaces[j]), t, chord);
             sigma[j] = c.surface(e0.surfaces[j]).sigma;
         }
-        acc.stats.force_imbalance = std::max(acc.stats.force_imbalance,
-                                             force_imbalance(c, e0.surfaces, dir, t));
+        LineVertexAngles a;
+        a.vertex = v;
+        a.surfaces = e0.surfaces;
+        a.force_imbalance = force_imbalance(c, e0.surfaces, dir, t);
         for (int j = 0; j < 3; ++j) {
             const int k = (j + 1) % 3, i = (j + 2) % 3; // film i is opposite the angle (j, k)
-            const double angle = angle_between(dir[j], dir[k]);
-            acc.add(angle);
-            const double error = std::abs(angle - young_angle(sigma[i], sigma[j], sigma[k]));
-            acc.stats.young_error = std::isnan(error) ? NAN : std::max(acc.stats.young_error, error);
+            a.angles[i] = angle_between(dir[j], dir[k]);
+            const double error = std::abs(a.angles[i] - young_angle(sigma[i], sigma[j], sigma[k]));
+            a.young_error = std::isnan(error) || std::isnan(a.young_error)
+                                ? NAN
+                                : std::max(a.young_error, error);
         }
+        out.push_back(a);
+    }
+    return out;
+}
+
+AngleStats triple_line_angles(const Cluster& c) {
+    AngleAccumulator acc;
+    for (const LineVertexAngles& a : triple_line_vertex_angles(c)) {
+        acc.stats.force_imbalance = std::max(acc.stats.force_imbalance, a.force_imbalance);
+        for (int i : {2, 0, 1}) acc.add(a.angles[i]); // the order of the fits: the same mean
+        acc.stats.young_error = std::isnan(a.young_error) || std::isnan(acc.stats.young_error)
+                                    ? NAN
+                                    : std::max(acc.stats.young_error, a.young_error);
     }
     return acc.finish();
 }

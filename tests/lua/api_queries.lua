@@ -75,4 +75,45 @@ T.assert_true(rep[1].pressure > rep[2].pressure, "the smaller cell has the large
 local tet = froth.cluster{vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
                           surfaces = {{{1, 3, 2}, {1, 2, 4}, {2, 3, 4}, {1, 4, 3}}}}
 T.assert_equal(#tet:body_report(), 0, "no bodies, no rows")
+
+-- c:film_angles(): the report's film angles vertex by vertex. Two unit cubes side by side:
+-- where their flat outer films meet the wall between them the angles are 90, 180 (facing the
+-- wall) and 90, exactly where each film's fitted two-ring stays on one flat face (the line's
+-- vertices at 1/4 .. 3/4 of its length, after three refinements).
+local boxes = froth.box_cells{x = {0, 1, 2}, y = {0, 1}, z = {0, 1}, cell = function(i) return i end}
+for _ = 1, 3 do boxes:refine() end
+local wall = nil
+for s = 1, boxes:info().surfaces do
+  local flat = true
+  for _, f in ipairs(boxes:facets{where = function(f) return f.surface == s end}) do
+    for _, v in ipairs(f.vertices) do flat = flat and boxes:vertex(v)[1] == 1 end
+  end
+  if flat then wall = s end
+end
+T.assert_true(wall ~= nil, "the wall between the cubes is one surface")
+local film_angles, inner, exact = boxes:film_angles(), 0, 0
+local report = boxes:report().angles
+T.assert_equal(#film_angles * 3, report.count, "three angles per line vertex, as the report counts")
+local least, most = 360, 0
+for _, a in ipairs(film_angles) do
+  T.assert_equal(#a.surfaces, 3, "a line vertex has three films")
+  for i = 1, 3 do least, most = math.min(least, a.angles[i]), math.max(most, a.angles[i]) end
+  local x = boxes:vertex(a.vertex)
+  local along = (x[2] == 0 or x[2] == 1) and x[3] or x[2] -- the coordinate along its line
+  if along >= 0.25 and along <= 0.75 then
+    inner = inner + 1
+    local ok = true
+    for i = 1, 3 do
+      local expected = a.surfaces[i] == wall and 180 or 90
+      ok = ok and math.abs(a.angles[i] - expected) < 1e-9
+    end
+    if ok then exact = exact + 1 end
+    T.assert_near(a.young_error, 60, 1e-9, "Young's 120 against 90/180/90")
+  end
+end
+T.assert_equal(inner, 20, "five vertices in the middle half of each of the four lines")
+T.assert_equal(exact, inner, "90, 180 facing the wall, 90 where the fits see flat faces")
+T.assert_equal(least, report.min, "the smallest angle is the report's")
+T.assert_equal(most, report.max, "the largest angle is the report's")
+T.assert_equal(#froth.sphere{levels = 1}:film_angles(), 0, "no triple lines, no angles")
 T.summary()
