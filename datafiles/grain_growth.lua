@@ -23,18 +23,37 @@
 --               froth datafiles/grain_growth.lua n=27 seed=2 lloyd=5 T=0.5
 --               FROTH_SMOKE=1 froth datafiles/grain_growth.lua     (ctest: 27 grains, 5 steps)
 --               froth datafiles/grain_growth.lua T=2 save=g.froth  (the last state, for froth.load)
+--               froth datafiles/grain_growth.lua T=2 save=g.froth checkpoint=50
+--                                               (also every 50 steps, to resume after a crash)
+--               froth datafiles/grain_growth.lua resume=g.froth T=1  (go on from a saved state;
+--                                               the transitions' memory is in it, so the run
+--                                               continues as the saving run would have)
 local script = require("froth.script")
 local measure = require("froth.measure")
 local opts = script.options({n = 200, seed = 1, lloyd = 20, h = 0.4, tau = 2e-3, T = 0.05,
-                             every = 5, output = "out", save = ""}, arg)
+                             every = 5, output = "out", save = "", checkpoint = 0, resume = ""},
+                            arg)
 if opts.smoke then opts.n, opts.seed, opts.lloyd, opts.T = 27, 2, 5, 5 * opts.tau end
+if math.type(opts.checkpoint) ~= "integer" or opts.checkpoint < 0 then
+  error(("grain_growth: checkpoint must be a number of steps (0: none), got '%s'"):format(opts.checkpoint))
+end
+if opts.checkpoint > 0 and opts.save == "" then
+  error("grain_growth: checkpoint = N saves to the file given as save = ...")
+end
 
-local c = froth.foam{n = opts.n, seed = opts.seed, lloyd = opts.lloyd, h = opts.h,
-                     equal_volumes = false}
+local c
+if opts.resume ~= "" then
+  c = froth.load(opts.resume)
+  print(("resumed from %s at t = %.4f"):format(opts.resume, c:time()))
+else
+  c = froth.foam{n = opts.n, seed = opts.seed, lloyd = opts.lloyd, h = opts.h,
+                 equal_volumes = false}
+end
 local info = c:info()
-print(("%d grains (seed %d, %d Lloyd steps): %d films, %d triple lines, %d quadruple points; %d vertices")
-      :format(info.bodies, opts.seed, opts.lloyd, info.surfaces, #c:triple_lines(),
-              #c:quadruple_points(), info.vertices))
+print(("%d grains%s: %d films, %d triple lines, %d quadruple points; %d vertices")
+      :format(info.bodies, opts.resume ~= "" and "" or
+              (" (seed %d, %d Lloyd steps)"):format(opts.seed, opts.lloyd),
+              info.surfaces, #c:triple_lines(), #c:quadruple_points(), info.vertices))
 
 local residuals, counts, clean_steps, deferred, retried = {}, {}, 0, 0, 0
 local steps, stop = 0, "T reached"
@@ -62,6 +81,7 @@ while c:time() < t_end - 1e-12 do
       residuals[#residuals + 1] = x
     end
   end
+  if opts.checkpoint > 0 and steps % opts.checkpoint == 0 then c:save(opts.save) end
   if steps % opts.every == 0 then
     local made = 0
     for _, n in pairs(counts) do made = made + n end
