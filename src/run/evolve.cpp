@@ -148,6 +148,7 @@ class Run {
         record(*s);
         if (watch_for_topology(before.has_value())) return before && retry(*before);
         tau_scale_ = std::min(1.0, 2 * tau_scale_);
+        memory_forgotten_ = false, forgotten_from_ = 1;
         write_output(*s);
         if (o_.on_step && !o_.on_step(*s)) {
             r_.stop_reason = "on_step";
@@ -231,9 +232,29 @@ class Run {
             tau_scale_ /= 4;
             return true;
         }
+        // Last, the same retries with the junctions' memory forgotten, as a run loaded from a
+        // state file without one has it: its rules (products not due until they shrink, no
+        // undoing a contact for 10 looks) keep transitions from cycling, but they can also
+        // hold back the one transition a tangle needs. The 200-grain network stopped at
+        // t = 1.1716 on a one-edge line of 2.4e-5 between two quadruple points whose T1 was
+        // not made; loaded from the state before, with a fresh memory, it made that T1 in its
+        // first step and ran on to T = 2.
+        if (retried_kind && o_.transitions && !memory_forgotten_) {
+            const int retried = r_.rejected_steps + 1;
+            const double shortest = tau_scale_;
+            restore(b);
+            r_.rejected_steps = retried;
+            junctions_ = JunctionTransitions(o_.watch.min_line_fraction);
+            junctions_.remember(c_, original_body_);
+            memory_forgotten_ = true, forgotten_from_ = shortest;
+            tau_scale_ = 1;
+            return true;
+        }
         if (r_.event && tau_scale_ < 1)
             r_.event->message +=
-                "; the step was retried down to tau = " + fmt(tau_scale_ * o_.tau);
+                "; the step was retried down to tau = " +
+                fmt(std::min(tau_scale_, forgotten_from_) * o_.tau) +
+                (memory_forgotten_ ? ", and again with the junctions' memory forgotten" : "");
         if (kind == "self-intersection") {
             TopologyEvent e = std::move(*r_.event);
             const int retried = r_.rejected_steps;
@@ -744,6 +765,10 @@ class Run {
     /// The shortest retried step, relative to the option's tau (three retries).
     static constexpr double kMinTauScale = 1.0 / 64;
     double tau_scale_ = 1; // the planned step over the option's tau (below 1 after a retry)
+    // the retries of this step went on with a fresh junction memory (retry), after going down
+    // to forgotten_from_ with the run's own
+    bool memory_forgotten_ = false;
+    double forgotten_from_ = 1;
     /// Times the upkeeps are gone through for one defect that none of them mends.
     static constexpr int kPassesAtOneDefect = 2;
     bool caps_relaxed_ = false; // relax_caps_once made its move in this step's look

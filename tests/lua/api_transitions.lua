@@ -622,10 +622,12 @@ do
   T.assert_true(r3.stop_reason:find("is collapsing", 1, true) ~= nil and
                 r3.stop_reason:find("below a tenth of the limits, and facet", 1, true) ~= nil,
                 "the message names the sliver and the crossing", r3.stop_reason)
-  -- first retried from the state before the step at tau / 4, / 16, / 64; then that state is kept
-  T.assert_equal(r3.rejected_steps, 3, "the step was retried three times")
-  T.assert_true(r3.stop_reason:find("retried down to tau = 1.5625e-05", 1, true) ~= nil,
-                "down to tau / 64", r3.stop_reason)
+  -- first retried from the state before the step at tau / 4, / 16, / 64, then at tau, / 4,
+  -- / 16, / 64 with the junctions' memory forgotten; then that state is kept
+  T.assert_equal(r3.rejected_steps, 7, "the step was retried 3 + 4 times")
+  T.assert_true(r3.stop_reason:find("retried down to tau = 1.5625e-05, and again with the " ..
+                                    "junctions' memory forgotten", 1, true) ~= nil,
+                "down to tau / 64, twice", r3.stop_reason)
   T.assert_equal(crossed:time(), 0, "the state before the step is kept")
   T.assert_equal(r3.steps, 0, "and no step counts")
 end
