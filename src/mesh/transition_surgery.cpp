@@ -225,10 +225,18 @@ void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset&
     const std::string vertex = " vertex " + std::to_string(v + 1);
     std::map<int, int> next, facet_from; // link u_j -> u_{j+1}, and its facet
     std::set<int> targets;
+    const std::size_t in_c = c.surface(si).triangles.size();
     for (std::size_t f = 0; f < s.triangles.size(); ++f) {
         const Tri& t = s.triangles[f];
         const int j = index_of(t, v);
         if (j == 3) continue;
+        // a facet appended by the split of another fan of this transition (its gap facet)
+        // reaches v: that fan's vertex and v are joined across the film, and the facet has
+        // no area in c to test its turn against (it was read out of c's bounds: a crash of
+        // the 200-grain network at t = 0.6759)
+        if (f >= in_c)
+            throw TopologyError(what + ": " + at + " joins its fans at" + vertex +
+                                " and at another corner of the transition across one facet");
         const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
         if (!next.emplace(x, y).second || !targets.insert(y).second)
             throw TopologyError(what + ": " + at + " is folded at" + vertex);

@@ -144,6 +144,8 @@ std::map<std::vector<int>, Value> array_map(const std::vector<NamedValues>& in, 
         }
         const double value = (*a)[i++];
         if (!(value >= least && value <= most)) throw bad("a value out of range");
+        if (std::is_integral_v<Value> && value != std::floor(value))
+            throw bad("a look that is not a whole number");
         out.emplace(std::move(cells), static_cast<Value>(value));
     }
     return out;
