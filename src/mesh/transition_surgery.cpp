@@ -231,9 +231,9 @@ void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset&
         const int j = index_of(t, v);
         if (j == 3) continue;
         // a facet appended by the split of another fan of this transition (its gap facet)
-        // reaches v: that fan's vertex and v are joined across the film, and the facet has
-        // no area in c to test its turn against (it was read out of c's bounds: a crash of
-        // the 200-grain network at t = 0.6759)
+        // reaches v (a T1 of a cell that meets itself: one film with fans at both ends):
+        // the facet has no area in c to test its turn against (it was read out of c's
+        // bounds: a crash of the 200-grain network at t = 0.6759)
         if (f >= in_c)
             throw TopologyError(what + ": " + at + " joins its fans at" + vertex +
                                 " and at another corner of the transition across one facet");
