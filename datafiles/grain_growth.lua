@@ -24,7 +24,8 @@
 --               FROTH_SMOKE=1 froth datafiles/grain_growth.lua     (ctest: 27 grains, 5 steps)
 --               froth datafiles/grain_growth.lua T=2 save=g.froth  (the last state, for froth.load)
 --               froth datafiles/grain_growth.lua T=2 save=g.froth checkpoint=50
---                                               (also every 50 steps, to resume after a crash)
+--                                               (also every 50 steps to g_checkpoint.froth, to
+--                                               resume after a crash or replay a stop)
 --               froth datafiles/grain_growth.lua resume=g.froth T=1  (go on from a saved state;
 --                                               the transitions' memory is in it, so the run
 --                                               continues as the saving run would have)
@@ -38,8 +39,11 @@ if math.type(opts.checkpoint) ~= "integer" or opts.checkpoint < 0 then
   error(("grain_growth: checkpoint must be a number of steps (0: none), got '%s'"):format(opts.checkpoint))
 end
 if opts.checkpoint > 0 and opts.save == "" then
-  error("grain_growth: checkpoint = N saves to the file given as save = ...")
+  error("grain_growth: checkpoint = N saves beside the file given as save = ...")
 end
+
+-- a file of its own, so that the state before a stop stays beside the final one
+local checkpoint_path = opts.save:gsub("%.froth$", "") .. "_checkpoint.froth"
 
 local c
 if opts.resume ~= "" then
@@ -81,7 +85,7 @@ while c:time() < t_end - 1e-12 do
       residuals[#residuals + 1] = x
     end
   end
-  if opts.checkpoint > 0 and steps % opts.checkpoint == 0 then c:save(opts.save) end
+  if opts.checkpoint > 0 and steps % opts.checkpoint == 0 then c:save(checkpoint_path) end
   if steps % opts.every == 0 then
     local made = 0
     for _, n in pairs(counts) do made = made + n end
