@@ -273,11 +273,7 @@ int l_film_angles(lua_State* L) {
             lua_createtable(L, 0, 5);
             set_integer(L, "vertex", a.vertex + 1);
             set_integers(L, "surfaces", a.surfaces, 1);
-            lua_createtable(L, 3, 0);
-            for (int i = 0; i < 3; ++i) {
-                lua_pushnumber(L, a.angles[i]);
-                lua_rawseti(L, -2, i + 1);
-            }
+            push_numbers(L, a.angles);
             lua_setfield(L, -2, "angles");
             set_number(L, "young_error", a.young_error);
             set_number(L, "force_imbalance", a.force_imbalance);

@@ -5,7 +5,6 @@
 #include "core/format.h"
 #include "core/interrupt.h"
 #include "io/history.h"
-#include "io/state_file.h"
 #include "io/vtk_writer.h"
 #include "mesh/transitions.h"
 #include "run/junction_transitions.h"
@@ -239,7 +238,7 @@ class Run {
         // t = 1.1716 on a one-edge line of 2.4e-5 between two quadruple points whose T1 was
         // not made; loaded from the state before, with a fresh memory, it made that T1 in its
         // first step and ran on to T = 2.
-        if (retried_kind && o_.transitions && !memory_forgotten_) {
+        if (retried_kind && !memory_forgotten_) { // retries come with transitions only
             const int retried = r_.rejected_steps + 1;
             const double shortest = tau_scale_;
             restore(b);
@@ -779,39 +778,6 @@ class Run {
 };
 
 } // namespace
-
-std::vector<NamedValues> save_transition_memory(const TransitionMemory& memory) {
-    std::vector<NamedValues> out;
-    if (!memory.junctions) return out;
-    memory.junctions->save(out);
-    out.push_back({"transitions.run",
-                   {memory.longest_edge, memory.transitions_made ? 1.0 : 0.0, memory.tau_scale}});
-    return out;
-}
-
-TransitionMemory restore_transition_memory(const std::vector<NamedValues>& arrays,
-                                           const Cluster& c) {
-    TransitionMemory m;
-    m.junctions = JunctionTransitions::restore(arrays, c.n_bodies());
-    const std::vector<double>* run = find_named(arrays, "transitions.run");
-    if (!m.junctions && !run) return m;
-    if (!m.junctions || !run || run->size() != 3 || !((*run)[0] >= 0 && (*run)[0] < 1e300) ||
-        ((*run)[1] != 0 && (*run)[1] != 1) || !((*run)[2] > 0 && (*run)[2] <= 1))
-        throw InvalidInput("transition memory: transitions.run must come with junctions.scalars "
-                           "and hold the longest edge, 0 or 1 and a tau scale in (0, 1]");
-    m.longest_edge = (*run)[0];
-    m.transitions_made = (*run)[1] == 1;
-    m.tau_scale = (*run)[2];
-    return m;
-}
-
-void save_state(const std::string& path, const Cluster& c, TimeStepper& stepper,
-                const TransitionMemory* memory) {
-    ClusterState s = capture_state(c, stepper.history(c));
-    if (memory) s.transitions = save_transition_memory(*memory);
-    write_state_file(path, s);
-    stepper.drop_factorizations();
-}
 
 EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o,
                     TransitionMemory* memory) {
