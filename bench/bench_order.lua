@@ -13,7 +13,7 @@
 --   (extinction at 0.25); error of R from the volume against order 2 at T/4096.
 -- Slopes are log2 of the ratio of successive errors. Seconds are the run's wall time.
 local opts = require("froth.script").options({cases = "sphere,sd,bubble,auto", levels = 4, relax = 0,
-                                              sd_level = 2, bubble_h = 0.2},
+                                              sd_level = 2, bubble_h = 0.2, bubble_settle = 0},
                                              arg)
 local cases = {}
 for name in tostring(opts.cases):gmatch("[^,]+") do cases[name] = true end
@@ -65,6 +65,34 @@ if cases.sphere then
   })
 end
 
+-- Shape measures that do not depend on where the vertices sit on the surface (BGN's
+-- tangential motion): the amplitude a of r = r0 + a P2(cos theta) fitted to the vertices by
+-- least squares about the centroid, and the triple line's mean radius and height about the z
+-- axis (the double bubble's axis of symmetry).
+function p2_amplitude(c)
+  local n, g = c:info().vertices, {0, 0, 0}
+  for v = 1, n do local x = c:vertex(v); for k = 1, 3 do g[k] = g[k] + x[k] / n end end
+  local s11, s12, s22, b1, b2 = 0, 0, 0, 0, 0
+  for v = 1, n do
+    local x = c:vertex(v)
+    local d = {x[1] - g[1], x[2] - g[2], x[3] - g[3]}
+    local r = math.sqrt(d[1] ^ 2 + d[2] ^ 2 + d[3] ^ 2)
+    local p = 1.5 * (d[3] / r) ^ 2 - 0.5
+    s11, s12, s22, b1, b2 = s11 + 1, s12 + p, s22 + p * p, b1 + r, b2 + r * p
+  end
+  return (s11 * b2 - s12 * b1) / (s11 * s22 - s12 * s12)
+end
+
+function ring(c)
+  local vs = c:triple_lines()[1].vertices
+  local R, z = 0, 0
+  for _, v in ipairs(vs) do
+    local x = c:vertex(v)
+    R, z = R + math.sqrt(x[1] ^ 2 + x[2] ^ 2) / #vs, z + x[3] / #vs
+  end
+  return {R, z}
+end
+
 if cases.sd then
   local base = froth.sphere{levels = opts.sd_level}
   for v = 1, base:info().vertices do
@@ -77,17 +105,23 @@ if cases.sd then
            opts.sd_level, base:info().vertices),
            function() return base:clone() end, "sd", 0.02, {8, 16, 32, 64, 128}, 1024, {
     {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
+    {name = "P2 amp", value = function(c, ref) return p2_amplitude(c) - p2_amplitude(ref) end},
   })
 end
 
 if cases.bubble and froth.has("gmsh") then
   local base = froth.double_bubble{h = opts.bubble_h}
   base:evolve{flow = "mcf", tau = 1e-3, steps = 20, progress = false}
+  if opts.bubble_settle > 0 then
+    base:evolve{flow = "mcf", tau = 1e-9, steps = opts.bubble_settle, progress = false}
+  end
   table_of(("MCF of the double bubble, h = %g (%d vertices), to t = 0.02 after t = 0.02"):format(
            opts.bubble_h, base:info().vertices), function() return base:clone() end, "mcf", 0.02,
            {4, 8, 16, 32, 64}, 512, {
     {name = "energy", value = function(c, ref) return c:energy() - ref:energy() end},
     {name = "volume 1", value = function(c, ref) return c:volumes()[1] - ref:volumes()[1] end},
+    {name = "ring R", value = function(c, ref) return ring(c)[1] - ring(ref)[1] end},
+    {name = "ring z", value = function(c, ref) return ring(c)[2] - ring(ref)[2] end},
   })
 end
 
