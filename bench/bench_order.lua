@@ -1,14 +1,15 @@
 -- The temporal order of c:step{order = 1 | 2} (docs/benchmarks.md "Order in time"):
 --   froth bench/bench_order.lua [cases=sphere,sd,bubble,auto] [levels=4] [relax=0] [sd_level=2]
---                               [bubble_h=0.2]
+--                               [bubble_h=0.2] [bubble_settle=0]
 -- sphere: MCF of the icosphere (froth.sphere{levels}) to t = 0.05; errors of the energy and of
 --   R from the volume against the same scheme at tau = T/1024 (the time error), and of R
 --   against the exact sqrt(1 - 4t) (time and space).
 -- sd: surface diffusion of r = 1 + 0.05 P2(cos theta) on the icosphere of level sd_level to t = 0.02,
 --   relaxed first to BGN's tangential condition (1000 steps of 1e-9); energy error against
---   order 2 at T/1024.
+--   order 2 at T/1024, and error of the fitted P2 amplitude (a shape measure).
 -- bubble: MCF of froth.double_bubble{h = bubble_h} to t = 0.02 after 20 order-1 steps of 1e-3;
---   energy and volume errors against order 2 at T/512.
+--   energy, volume and the triple line's mean radius and height against order 2 at T/512;
+--   bubble_settle > 0 settles the start by that many steps of 1e-9 first.
 -- auto: tau = "auto" against fixed order-2 steps, MCF of the icosphere of level 2 to t = 0.24
 --   (extinction at 0.25); error of R from the volume against order 2 at T/4096.
 -- Slopes are log2 of the ratio of successive errors. Seconds are the run's wall time.
