@@ -70,7 +70,7 @@ end
 -- tangential motion): the amplitude a of r = r0 + a P2(cos theta) fitted to the vertices by
 -- least squares about the centroid, and the triple line's mean radius and height about the z
 -- axis (the double bubble's axis of symmetry).
-function p2_amplitude(c)
+local function p2_amplitude(c)
   local n, g = c:info().vertices, {0, 0, 0}
   for v = 1, n do local x = c:vertex(v); for k = 1, 3 do g[k] = g[k] + x[k] / n end end
   local s11, s12, s22, b1, b2 = 0, 0, 0, 0, 0
@@ -84,7 +84,7 @@ function p2_amplitude(c)
   return (s11 * b2 - s12 * b1) / (s11 * s22 - s12 * s12)
 end
 
-function ring(c)
+local function ring(c)
   local vs = c:triple_lines()[1].vertices
   local R, z = 0, 0
   for _, v in ipairs(vs) do
