@@ -287,6 +287,25 @@ int l_collapse_disc_film(lua_State* L) {
                          });
 }
 
+/// c:pinch_film(u, w) -> {surface, cells, size, point, where, removed_vertices, energy_before,
+/// energy_after}: the film across which the edge (u, w) joins two of its triple lines is
+/// pinched there, and the cells beyond the lines meet in a two-sided film.
+int l_pinch_film(lua_State* L) {
+    ClusterHandle& h = self(L);
+    ChangeGuard changing(L, h, "pinch_film");
+    const int u = check_id(L, 2, h.cluster.n_vertices(), "vertex", "vertices");
+    const int w = check_id(L, 3, h.cluster.n_vertices(), "vertex", "vertices");
+    return guarded(L, [&] {
+        TransitionRecord record;
+        apply_transition(L, h, pinch_film(h.cluster, u, w, &record), record); // throws first
+        set_integer(L, "surface", record.film + 1);
+        push_integers(L, std::vector<int>{record.cells[0] + 1, record.cells[1] + 1});
+        lua_setfield(L, -2, "cells");
+        set_number(L, "size", record.size);
+        return 1;
+    });
+}
+
 /// The one length option of c:split_edges, positive and finite.
 double edge_length_option(lua_State* L, const char* op, const char* key) {
     Options o(L, 2, op);
@@ -408,6 +427,7 @@ const luaL_Reg methods[] = {
     {"t1_inverse", l_t1_inverse},
     {"collapse_two_sided_film", l_collapse_two_sided_film},
     {"collapse_disc_film", l_collapse_disc_film},
+    {"pinch_film", l_pinch_film},
     {"collapse_edges", l_collapse_edges},
     {"split_edges", l_split_edges},
     {"relax_flat_corners", l_relax_flat_corners},

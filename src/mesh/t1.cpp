@@ -26,10 +26,6 @@ namespace {
 
 std::string line_name(int l) { return "t1: triple line " + std::to_string(l + 1); }
 
-int index_of(const Tri& t, int v) {
-    return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
-}
-
 /// What the surgery needs to know about one end (a or b) of the line.
 struct LineEnd {
     int vertex = -1;
@@ -58,7 +54,6 @@ class T1 {
     int corner_of(int film) const;
     void collapse_line_films(ClusterSpec& spec);
     void split_fans(ClusterSpec& spec, const LineEnd& end);
-    double mean_edge_at(int v) const;
     std::vector<Vec3> place_film(const ClusterSpec& spec);
     std::vector<int> join_films_across(ClusterSpec& spec) const;
     double film_area(const std::vector<Vec3>& V) const;
@@ -130,28 +125,12 @@ void T1::unwrap_line() {
     for (int v : seg_) d_[v] = surgery::lattice_offset(c_, u_[v], c_.position(v));
 }
 
-/// The mean length of the edges at v in its surfaces' facets.
-double T1::mean_edge_at(int v) const {
-    double sum = 0;
-    int count = 0;
-    for (int si : surgery::surfaces_at(c_, v)) {
-        const Surface& s = c_.surface(si);
-        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-            const int k = index_of(s.triangles[f], v);
-            if (k == 3) continue;
-            const auto x = s.corners(c_.positions(), f);
-            sum += (x[(k + 1) % 3] - x[k]).norm() + (x[(k + 2) % 3] - x[k]).norm();
-            count += 2;
-        }
-    }
-    return count ? sum / count : 0;
-}
-
 /// The side the new film is first tried at: the line's length, half the mean edge at its
 /// ends, or min_side, whichever is largest.
 double T1::first_side() const {
     return std::max({length_, min_side_,
-                     0.25 * (mean_edge_at(seg_.front()) + mean_edge_at(seg_.back()))});
+                     0.25 * (surgery::mean_edge_at(c_, seg_.front()) +
+                             surgery::mean_edge_at(c_, seg_.back()))});
 }
 
 /// The corners p_s: in the plane through the line's midpoint normal to it, each in the

@@ -173,6 +173,23 @@ std::set<int> surfaces_at(const Cluster& c, int v) {
     return at;
 }
 
+double mean_edge_at(const Cluster& c, int v) {
+    double sum = 0;
+    int count = 0;
+    for (int si : surfaces_at(c, v)) {
+        const Surface& s = c.surface(si);
+        for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+            const Tri& t = s.triangles[f];
+            const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+            if (k == 3) continue;
+            const auto x = s.corners(c.positions(), f);
+            sum += (x[(k + 1) % 3] - x[k]).norm() + (x[(k + 2) % 3] - x[k]).norm();
+            count += 2;
+        }
+    }
+    return count ? sum / count : 0;
+}
+
 Vec3 facet_area(const Cluster& c, int surface, std::size_t facet) {
     const auto x = c.surface(surface).corners(c.positions(), facet);
     return (x[1] - x[0]).cross(x[2] - x[0]);

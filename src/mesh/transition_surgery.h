@@ -55,6 +55,9 @@ Offset lattice_offset(const Cluster& c, const Vec3& unwrapped, const Vec3& store
 /// The surfaces with a facet at vertex v.
 std::set<int> surfaces_at(const Cluster& c, int v);
 
+/// The mean length of the edges at v in its surfaces' facets (0 if it has none).
+double mean_edge_at(const Cluster& c, int v);
+
 /// The area vector of facet f of surface s of c (its corners in the facet's frame).
 Vec3 facet_area(const Cluster& c, int surface, std::size_t facet);
 

@@ -16,16 +16,17 @@ namespace froth {
 /// What a transition did, for event lists and messages.
 struct TransitionRecord {
     std::string kind;    ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film",
-                         ///< "disc film"
+                         ///< "disc film", "film pinch"
     std::string where;   ///< for people: "body 3 (volume 1e-05, 4 neighbouring cells) at (x, y, z)"
     int body = -1;       ///< pop, absorb: the body that vanished (0-based, its id before)
     int line = -1;       ///< T1: the triple line that became a film (0-based, before)
-    int film = -1;       ///< inverse T1, two-sided or disc film: the film that went (0-based)
-    /// T1: the bodies the new film lies between; inverse T1: those the film lay between
+    int film = -1;       ///< inverse T1, two-sided or disc film: the film that went (0-based);
+                         ///< film pinch: the film pinched
+    /// T1, film pinch: the bodies the new film lies between; inverse T1: those the film lay between
     /// (-1: outside); absorb: the body and the one that absorbed it
     std::array<int, 2> cells{-1, -1};
     Vec3 point = Vec3::Zero(); ///< where it collapsed
-    double size = 0;     ///< T1: the new film's side; inverse T1, two-sided film: the new line's length
+    double size = 0;     ///< T1, film pinch: the new film's side; inverse T1, two-sided film: the new line's length
     int neighbours = 0;  ///< pop, absorb: the cells around it (the outside counts as one)
     int removed_vertices = 0, removed_facets = 0;
     /// T1, inverse T1, two-sided film: the new corners were moved off slivers
@@ -148,6 +149,41 @@ Cluster t1_film_to_line(const Cluster& c, int surface, TransitionRecord* record 
 /// triple lines between two quadruple points with distinct third cells.
 Cluster collapse_two_sided_film(const Cluster& c, int surface, TransitionRecord* record = nullptr,
                                 double min_length = 0, bool fit_corners = true);
+
+/// The pinch of a film between two of its triple lines (collapse_two_sided_film backwards):
+/// the edge (u, w) lies inside film F between cells A and B and joins u, a free point of its
+/// border line (A, B, C), to w, a free point of its line (A, B, D), C != D. Where the lines
+/// approach across F, C and D meet: u and w become two quadruple points p and q, side apart
+/// along the lines about the edge's midpoint (side: the larger of min_side and the mean edge
+/// at u and w; halved while a facet would turn over, at most ten times), F's two facets at
+/// the edge go and F parts in two where the edge was its only link (the part at q becomes a
+/// new surface with F's tension, anisotropy and mobility), the films A|C, B|C at u and A|D,
+/// B|D at w split their fans between p and q, and a two-sided film C|D of one facet (p, q, r)
+/// forms, bounded by the lines (A, C, D) along p q and (B, C, D) through its third corner r,
+/// with the tension, anisotropy and mobility of A|C. New surfaces come last; bodies, their
+/// reference and target volumes are kept (the surgery moves a volume of order side^3).
+/// \throw InvalidInput for a vertex id out of range or u = w; TopologyError (naming the edge and
+/// why, nothing changed) where u or w is not a free point of one triple line, where they do
+/// not share exactly one film with the edge inside it, where the same cell lies beyond both
+/// lines (C = D), where F would keep no facet at p or q, or where every side allowed turns a
+/// facet over.
+Cluster pinch_film(const Cluster& c, int u, int w, TransitionRecord* record = nullptr,
+                   double min_side = 0, bool fit_corners = true);
+
+/// A film's waist: an edge across it between two of its lines, where pinch_film can cut it.
+struct FilmWaist {
+    int u = -1, w = -1; ///< the edge's ends, u < w
+    int film = -1;      ///< the film it lies in
+    /// the film's two cells sorted, then the cells beyond the two lines sorted (-1: outside)
+    std::array<int, 4> cells{};
+    double length = 0;
+};
+
+/// The edges shorter than `shorter_than` that join free points of two different triple lines
+/// across a film (pinch_film's edges), shortest first; not those whose ends are within three
+/// edges of each other along the lines (a film's corner closed to a slit, which the upkeep
+/// zips: zip_slit).
+std::vector<FilmWaist> film_waists(const Cluster& c, double shorter_than);
 
 /// The collapse of a disc film (a contact of two cells through a hole in a third's films, as a
 /// T1 of a cell that meets itself leaves one): surface `surface`, between cells D and E,

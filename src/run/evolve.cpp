@@ -398,7 +398,8 @@ class Run {
         // A transition may leave the next one due; a bound keeps a cycle from running forever.
         for (int made = 0;; ++made) {
             if (o_.transitions && made < kMaxTransitionsPerStep &&
-                (split_edges() || transition_junction(true) || transition_junction(false)))
+                (split_edges() || transition_junction(true) || transition_junction(false) ||
+                 pinch_film(true)))
                 continue;
             e = watch_.check(c_, r_.steps);
             if (!e || !o_.transitions) break;
@@ -441,10 +442,11 @@ class Run {
     bool mend(const TopologyEvent& e, UpkeepTurns& t) {
         // the facet's upkeeps come last for an edge too: the watch names a collapsing facet
         // only when no edge is collapsing
-        static constexpr std::array<Upkeep, 9> for_edge = {
-            &Run::collapse_edges,       &Run::flip_edges,           &Run::remesh_thin,
-            &Run::relax_short_edges,    &Run::force_film_transition, &Run::force_line_transition,
-            &Run::remove_valence_three, &Run::relax_caps_once,       &Run::collapse_needles};
+        static constexpr std::array<Upkeep, 10> for_edge = {
+            &Run::collapse_edges,        &Run::pinch_films,           &Run::flip_edges,
+            &Run::remesh_thin,           &Run::relax_short_edges,     &Run::force_film_transition,
+            &Run::force_line_transition, &Run::remove_valence_three,  &Run::relax_caps_once,
+            &Run::collapse_needles};
         // a film vertex of three neighbours beside a line (joined to both its ends) folds
         // the film in the line's T1: where the forced T1s fail, such vertices go and the T1s
         // are forced again
@@ -539,7 +541,20 @@ class Run {
     /// triangular films with `films`, else lines; false if none can.
     bool transition_junction(bool films, bool force = false) {
         TransitionEvent event;
-        std::optional<Cluster> changed = junctions_.make(c_, films, force, original_body_, event);
+        return take_transition(junctions_.make(c_, films, force, original_body_, event), event);
+    }
+
+    /// A film whose waist, an edge between two of its lines, is shorter than a T1's line
+    /// (`due`), or the collapse limit (forced: the upkeep for a collapsing edge), pinches
+    /// there (JunctionTransitions::pinch); false if none can.
+    bool pinch_film(bool due) {
+        TransitionEvent event;
+        const double below = due ? o_.watch.min_line_fraction * mean_edge_length(c_) : collapse_limit();
+        return take_transition(junctions_.pinch(c_, below, !due, original_body_, event), event);
+    }
+    bool pinch_films() { return pinch_film(false); }
+
+    bool take_transition(std::optional<Cluster> changed, TransitionEvent& event) {
         if (!changed) return false;
         event.step = r_.steps;
         r_.events.push_back(std::move(event));

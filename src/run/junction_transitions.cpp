@@ -28,6 +28,10 @@ constexpr int kContactLooks = 10;
 /// limit is 0.29 of it wide.
 constexpr double kThinFilm = 0.1;
 
+/// A film's waist is remembered below this many T1 lengths, so that one that comes below the
+/// T1 length is known to be shrinking.
+constexpr double kWaistMemory = 4;
+
 std::string cell_name(int k) {
     return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
 }
@@ -59,11 +63,25 @@ std::vector<Junction> JunctionTransitions::junctions(const Cluster& c, bool film
     return js;
 }
 
+std::vector<FilmWaist> JunctionTransitions::waists(const Cluster& c, double below,
+                                                   const std::vector<int>& original_body) const {
+    std::vector<FilmWaist> out = film_waists(c, below);
+    for (FilmWaist& w : out)
+        for (int& k : w.cells)
+            if (k >= 0) k = original_body[k];
+    return out;
+}
+
 void JunctionTransitions::remember(const Cluster& c, const std::vector<int>& original_body) {
     for (bool films : {false, true}) {
         auto& memory = films ? film_sizes_ : line_sizes_;
         memory.clear();
         for (const Junction& j : junctions(c, films, original_body)) memory[j.cells] = j.size;
+    }
+    waist_sizes_.clear();
+    for (const FilmWaist& w : waists(c, kWaistMemory * fraction_ * mean_edge_length(c), original_body)) {
+        const std::vector<int> key(w.cells.begin(), w.cells.end());
+        if (!waist_sizes_.count(key)) waist_sizes_[key] = w.length; // the shortest edge
     }
     for (bool films : {false, true}) {
         const auto& memory = films ? film_sizes_ : line_sizes_;
@@ -99,7 +117,7 @@ void JunctionTransitions::carry_over(const std::vector<int>& original_body) {
         memory = std::move(out);
     };
     renumber(line_sizes_), renumber(film_sizes_), renumber(products_[0]), renumber(products_[1]);
-    renumber(contacts_);
+    renumber(contacts_), renumber(waist_sizes_);
     made_[0].clear(), made_[1].clear(), refused_.clear(), forced_refused_.clear();
     refusals_.clear();
     bodies_ = static_cast<int>(original_body.size());
@@ -162,6 +180,7 @@ void JunctionTransitions::save(std::vector<NamedValues>& out) const {
     out.push_back(map_array("junctions.line_products", products_[0]));
     out.push_back(map_array("junctions.film_products", products_[1]));
     out.push_back(map_array("junctions.contacts", contacts_));
+    out.push_back(map_array("junctions.waist_sizes", waist_sizes_));
 }
 
 std::optional<JunctionTransitions> JunctionTransitions::restore(const std::vector<NamedValues>& in,
@@ -184,6 +203,7 @@ std::optional<JunctionTransitions> JunctionTransitions::restore(const std::vecto
     m.products_[1] = array_map<double>(in, "junctions.film_products", n_bodies, -1, kMost);
     m.contacts_ = array_map<int>(in, "junctions.contacts", n_bodies, m.look_ - kContactLooks,
                                  m.look_);
+    m.waist_sizes_ = array_map<double>(in, "junctions.waist_sizes", n_bodies, 0, kMost);
     return m;
 }
 
@@ -406,6 +426,53 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
         if (force) forced_refused_ = refused_;
         return std::nullopt;
     }
+}
+
+std::optional<Cluster> JunctionTransitions::pinch(const Cluster& c, double max_length, bool force,
+                                                  const std::vector<int>& original_body,
+                                                  TransitionEvent& event) {
+    if (const std::uint64_t now = mesh_fingerprint(c); now != mesh_) refusals_.clear(), mesh_ = now;
+    const double limit = fraction_ * mean_edge_length(c);
+    for (const FilmWaist& w : waists(c, max_length, original_body)) {
+        const std::vector<int> cells(w.cells.begin(), w.cells.end());
+        const auto was = waist_sizes_.find(cells);
+        if (!force && (was == waist_sizes_.end() || !(w.length < was->second))) continue;
+        const auto key = std::make_tuple(false, force, cells);
+        if (const auto it = refusals_.find(key); it != refusals_.end() && it->second.size == w.length) {
+            refused_ = it->second.why;
+            continue;
+        }
+        // the contact a lens's collapse took there in the last few looks is not given back
+        const std::vector<int> lens{cells[2], cells[3]};
+        if (std::string why = undoes_recent(lens, force); !why.empty()) {
+            refused_ = "no film pinch could be made: " + why;
+            continue;
+        }
+        TransitionRecord record;
+        try {
+            Cluster changed = pinch_film(c, w.u, w.w, &record, 2 * limit, fit_corners_);
+            check_crossings(c, changed, record);
+            event = TransitionEvent{record.kind, record.where, c.time(), 0, -1, 0, energy(c),
+                                    energy(changed)};
+            event.film = record.film;
+            for (int i = 0; i < 2; ++i)
+                event.cells[i] = record.cells[i] >= 0 ? original_body[record.cells[i]] : -1;
+            // the lens: its two cells, then those of its sides (the pinched film's)
+            contacts_[lens] = look_;
+            const std::vector<int> made{cells[2], cells[3], cells[0], cells[1]};
+            made_[1].insert(made);
+            products_[1][made] = -1;
+            forget_refusals_near(cells);
+            mesh_ = mesh_fingerprint(changed);
+            return changed;
+        } catch (const TopologyError& x) {
+            std::string why = x.what();
+            if (why.rfind("pinch_film: ", 0) == 0) why.erase(0, 12);
+            refused_ = "no film pinch could be made: " + why;
+            refusals_[key] = {w.length, refused_};
+        }
+    }
+    return std::nullopt;
 }
 
 } // namespace froth

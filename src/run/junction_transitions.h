@@ -31,11 +31,12 @@
 namespace froth {
 
 struct TransitionRecord; // mesh/transitions.h
+struct FilmWaist;        // mesh/transitions.h
 
 /// A topological transition a run made.
 struct TransitionEvent {
     std::string kind;  ///< "pop body", "absorb body", "T1", "inverse T1", "two-sided film",
-                       ///< "disc film"
+                       ///< "disc film", "film pinch"
     std::string where; ///< what and where, for people (TransitionRecord::where)
     double t = 0;      ///< the model time of the transition
     int step = 0;      ///< it followed this step (evolve) or round (minimize) of the run (1-based)
@@ -44,8 +45,10 @@ struct TransitionEvent {
     int neighbours = 0; ///< pop, absorb: the cells around it (the outside counts as one)
     double energy_before = 0, energy_after = 0;
     int line = -1;     ///< T1: the triple line that became a film (0-based, its id before)
-    int film = -1;     ///< inverse T1, lens, disc: the film that went (0-based, its id before)
-    /// T1: the bodies the new film lies between; inverse T1: those the film lay between;
+    int film = -1;     ///< inverse T1, lens, disc: the film that went (0-based, its id before);
+                       ///< film pinch: the film pinched
+    /// T1, film pinch: the bodies the new film lies between; inverse T1: those the film lay
+    /// between;
     /// absorb: the body and the one it joined; as numbered at the start of the run (-1: the
     /// outside)
     std::array<int, 2> cells{-1, -1};
@@ -92,6 +95,15 @@ class JunctionTransitions {
     /// refused() says why the due ones could not be made).
     std::optional<Cluster> make(const Cluster& c, bool films, bool force,
                                 const std::vector<int>& original_body, TransitionEvent& event);
+    /// The pinch (pinch_film) at the shortest edge below max_length across a film between two
+    /// of its lines (pinched_film_edges) that the mesh lets be made without crossings: the
+    /// film's waist closing, as a short line is a T1's. Unless forced, not where it would give
+    /// back the contact a lens's collapse took in the last few looks. The lens it makes is a
+    /// product (not due in this look, and later only once below half its size). The new
+    /// cluster and its event (step left to the caller), or none (then refused() says why the
+    /// last one could not be made).
+    std::optional<Cluster> pinch(const Cluster& c, double max_length, bool force,
+                                 const std::vector<int>& original_body, TransitionEvent& event);
     /// Why the last forced attempt of this look was refused, or without one the last attempt:
     /// a forced one ignores the contact lock, so its reason is the mesh's (a stop's message
     /// named the lock of a later unforced attempt before).
@@ -125,6 +137,12 @@ class JunctionTransitions {
     bool fit_corners_;
     // the sizes of the junctions at the last look, by their cells
     std::map<std::vector<int>, double> line_sizes_, film_sizes_;
+    // the lengths of the films' waists (film_waists) below kWaistMemory T1 lengths at the
+    // last look, by their cells (FilmWaist::cells)
+    std::map<std::vector<int>, double> waist_sizes_;
+    /// The waists of c shorter than `below`, their cells in the bodies' original ids.
+    std::vector<FilmWaist> waists(const Cluster& c, double below,
+                                  const std::vector<int>& original_body) const;
     /// True if j (a film with `film`) is the product of an earlier transition that has not
     /// yet shrunk below kProductShrink of its first size.
     bool protected_product(const Junction& j, bool film) const;
@@ -139,7 +157,8 @@ class JunctionTransitions {
     // the look it did so in
     std::map<std::vector<int>, int> contacts_;
     // the transitions the mesh refused in this look, by (film, forced, the junction's
-    // cells), with the junction's size then and why: one is not tried again in the look
+    // cells; a pinch's: false, forced, the waist's four cells, which no line has), with the
+    // junction's size then and why: one is not tried again in the look
     // while its size is the same and no transition was made next to it (at two of its
     // cells: a junction that shares a film with it). Each attempt rebuilds the whole
     // cluster, and without this every call of make tried every refused one again (the

@@ -231,6 +231,7 @@ T.check_error("t1_inverse: surface " .. tri .. " has 2 triple lines on its borde
 T.check_error("collapse_two_sided_film: surface 1 has 4 triple lines on its border, not two",
               lens_cluster.collapse_two_sided_film, lens_cluster, 1)
 T.check_error("surface 99 does not exist", lens_cluster.collapse_two_sided_film, lens_cluster, 99)
+local with_lens = lens_cluster:clone()
 local lens = lens_cluster:collapse_two_sided_film(tri)
 T.assert_equal(lens.surface, tri, "collapse_two_sided_film: which film")
 T.assert_true(lens.where:find("two-sided film " .. tri, 1, true) ~= nil, "where names it", lens.where)
@@ -249,6 +250,59 @@ T.assert_plateau_points(lens_cluster)
 T.assert_true(math.abs(lens.energy_after - lens.energy_before) < 1e-3 * lens.energy_before,
               "the collapse of a small lens changes the energy by little",
               ("%.9g -> %.9g"):format(lens.energy_before, lens.energy_after))
+
+-- 4d. The pinch of a film between two of its lines undoes that collapse: the collapse left
+-- its two points joined by an edge across the film it joined (the lines (D, X, Y) and
+-- (E, X, Y) pass each other there); c:pinch_film on that edge parts the film and D and E
+-- meet again in a two-sided film.
+local pinched = lens_cluster:clone()
+local line_of = {}
+for i, tl in ipairs(pinched:triple_lines()) do
+  for _, v in ipairs(tl.vertices) do line_of[v] = line_of[v] or i end
+end
+local bridge
+for _, e in ipairs(pinched:edges()) do
+  local a, b = e.vertices[1], e.vertices[2]
+  if not e.triple_line and line_of[a] and line_of[b] and line_of[a] ~= line_of[b] then
+    local x = pinched:vertex(a)
+    local d = (x[1] - lens.point[1]) ^ 2 + (x[2] - lens.point[2]) ^ 2 + (x[3] - lens.point[3]) ^ 2
+    if not bridge or d < bridge.d then bridge = {a, b, d = d} end
+  end
+end
+T.assert_true(bridge ~= nil and bridge.d < 0.01, "the collapse's edge across the joined film")
+T.check_error("pinch_film: the edge's two vertices are the same", pinched.pinch_film, pinched,
+              bridge[1], bridge[1])
+T.check_error("vertex 99999 does not exist", pinched.pinch_film, pinched, bridge[1], 99999)
+local q1 = pinched:quadruple_points()[1]
+T.check_error("pinch_film: edge " .. q1 .. "-" .. bridge[2] .. ": vertex " .. q1 .. " is not a free point",
+              pinched.pinch_film, pinched, q1, bridge[2])
+local along = pinched:triple_lines()[line_of[bridge[1]]].vertices
+T.check_error("share 3 films, not one", pinched.pinch_film, pinched, along[2], along[3])
+T.assert_equal(pinched:info().vertices, lens_cluster:info().vertices, "a refused pinch changes nothing")
+local pinch = pinched:pinch_film(bridge[1], bridge[2])
+T.assert_true(pinch.where:find("parted in two; a two-sided film", 1, true) ~= nil, "where", pinch.where)
+T.assert_equal(#pinched:quadruple_points(), #with_lens:quadruple_points(),
+               "as many quadruple points as with the lens")
+T.assert_equal(#pinched:triple_lines(), #with_lens:triple_lines(), "as many triple lines")
+T.assert_equal(pinched:info().surfaces, with_lens:info().surfaces, "as many films")
+T.assert_equal(contacts(pinched), contacts(with_lens), "the lens's cells meet again")
+local lens_cells = {lens.cells[1], lens.cells[2]}
+table.sort(lens_cells)
+local made = {pinch.cells[1], pinch.cells[2]}
+table.sort(made)
+T.assert_equal(made[1] .. "|" .. made[2], lens_cells[1] .. "|" .. lens_cells[2], "between the same cells")
+T.assert_plateau_points(pinched)
+T.assert_true(math.abs(pinch.energy_after - pinch.energy_before) < 1e-3 * pinch.energy_before,
+              "the pinch changes the energy by little",
+              ("%.9g -> %.9g"):format(pinch.energy_before, pinch.energy_after))
+for b = 1, 5 do
+  T.assert_true(math.abs(pinched:volumes()[b] - lens_cluster:volumes()[b]) < 1e-3 * V0[b],
+                "body " .. b .. " keeps its volume", tostring(pinched:volumes()[b]))
+end
+-- (the collapse left a sliver in the joined film that the upkeep mends: with transitions)
+local after_pinch = pinched:evolve{flow = "mcf", tau = 1e-4, steps = 3, progress = false}
+T.assert_equal(after_pinch.stop_reason, "steps done", "the flow goes on from the pinch",
+               after_pinch.stop_reason)
 
 local blocked = band()
 local rb = blocked:evolve{flow = "sd", tau = 1e-3, T = 0.03, progress = false, transitions = false}

@@ -1,9 +1,10 @@
 -- Regression: minimize and surface diffusion of a 64-cell periodic Voronoi foam. The foam
 -- has small triangular films and short triple lines (the Voronoi diagram's, the minimisation
 -- shrinks them further); without transitions the run stops on its first step, with them the
--- shrinking triangles collapse to lines (inverse T1) and the shrinking lines open to films
--- (T1), and the run goes on. Each transition is local: the energy changes by a small fraction,
--- the cells fill the box, and every Plateau point keeps its four lines.
+-- shrinking triangles collapse to lines (inverse T1), the shrinking lines open to films (T1),
+-- a film whose waist closes between two of its lines parts (a film pinch), and the run goes
+-- on. Each transition is local: the energy changes by a small fraction, the cells fill the
+-- box, and every Plateau point keeps its four lines.
 local T = require("froth.test")
 
 local start = froth.foam{n = 64, seed = 1, h = 0.4, lloyd = 20}
@@ -64,7 +65,7 @@ for _, e in ipairs(r.events) do
   T.assert_true(e.kind ~= "T1" or not parted[key], "a T1 does not undo an inverse T1 of its step", e.where)
 end
 T.assert_equal(#r.events, (count["inverse T1"] or 0) + (count["T1"] or 0) +
-               (count["two-sided film"] or 0), "no pops")
+               (count["two-sided film"] or 0) + (count["film pinch"] or 0), "no pops")
 local filled = 0
 for _, v in ipairs(c:volumes()) do filled = filled + v end
 T.assert_near(filled, box, 1e-9 * box, "the cells fill the box")
@@ -73,7 +74,9 @@ for b, v in ipairs(c:volumes()) do
                 "body " .. b .. " keeps its volume", tostring(v))
 end
 local inverse = (count["inverse T1"] or 0) - (count["T1"] or 0) + 2 * (count["two-sided film"] or 0)
+                - 2 * (count["film pinch"] or 0)
 T.assert_equal(#c:quadruple_points(), #start:quadruple_points() - inverse,
-               "an inverse T1 takes one quadruple point, a T1 gives one, a lens's collapse two")
+               "an inverse T1 takes one quadruple point, a T1 gives one, a lens's collapse two, " ..
+               "a film's pinch gives two")
 T.assert_plateau_points(c)
 T.summary()

@@ -398,8 +398,8 @@ TEST(FitCorners, KeepsAGoodCornerAndRefusesAFarOne) {
 }
 
 /// A transition memory as a state file holds it, for a cluster of 2 bodies (1-based, 0 the
-/// outside): a line and a triangular film with their sizes, a product not yet measured and a
-/// contact two looks old.
+/// outside): a line and a triangular film with their sizes, a product not yet measured, a
+/// contact two looks old and a film's waist.
 std::vector<NamedValues> saved_memory() {
     return {{"junctions.scalars", {0.2, 1, 2, 7}},
             {"junctions.line_sizes", {5, 0, 1, 2, 0, 1, 0.04}},
@@ -407,6 +407,7 @@ std::vector<NamedValues> saved_memory() {
             {"junctions.line_products", {5, 0, 1, 2, 0, 1, -1}},
             {"junctions.film_products", {}},
             {"junctions.contacts", {2, 1, 2, 5}},
+            {"junctions.waist_sizes", {4, 1, 2, 0, 1, 0.01}},
             {"transitions.run", {0.31, 1, 0.5}}};
 }
 
