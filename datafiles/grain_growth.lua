@@ -2,8 +2,9 @@
 -- grains (the Voronoi cells of n random sites, relaxed by Lloyd's algorithm, each grain keeping
 -- its own volume as the flow changes it: no volume constraint), every film of tension and
 -- mobility 1, with the topological transitions that let it coarsen (inverse T1s of shrinking
--- triangular films, T1s of shrinking triple lines, collapses of two-sided and disc films, pops of
--- vanishing grains; docs/lua_api.md "Topological transitions").
+-- triangular films, T1s of shrinking triple lines, collapses of two-sided and disc films, pinches
+-- of films whose waist closes between two of their lines, pops of vanishing grains;
+-- docs/lua_api.md "Topological transitions").
 --
 -- After every step without a transition or mesh upkeep it checks each grain against the
 -- MacPherson-Srolovitz law (Nature 446, 2007), in froth's units (normal velocity kappa, the sum
