@@ -109,17 +109,19 @@ void FilmPinch::find_films() {
     if (A_ == B_)
         throw TopologyError(name_ + ": surface " + std::to_string(film_ + 1) +
                             " lies between a cell and itself");
+    // the cell beyond the line through v: its films other than F are one of A and one of B
     const auto third = [&](const std::set<int>& films, std::array<int, 2>& sorted) {
         std::set<int> beyond;
+        std::array<int, 2> of{0, 0}; // films of A, of B
         for (int s : films) {
             if (s == film_) continue;
             const auto& k = cells_[s];
             const bool a = k[0] == A_ || k[1] == A_, b = k[0] == B_ || k[1] == B_;
             if (a == b) return -2; // not a film of A or B alone
-            sorted[a ? 0 : 1] = s;
+            sorted[a ? 0 : 1] = s, ++of[a ? 0 : 1];
             beyond.insert(k[0] == (a ? A_ : B_) ? k[1] : k[0]);
         }
-        return beyond.size() == 1 ? *beyond.begin() : -2;
+        return of[0] == 1 && of[1] == 1 && beyond.size() == 1 ? *beyond.begin() : -2;
     };
     C_ = third(su, at_u_), D_ = third(sw, at_w_);
     if (C_ == -2 || D_ == -2 || C_ == A_ || C_ == B_ || D_ == A_ || D_ == B_)
