@@ -56,6 +56,10 @@ print(("with transitions: %s, %d steps, %d inverse T1s, %d T1s, %d edges collaps
 T.assert_equal(r.steps, steps, "with transitions all steps are taken", r.stop_reason)
 T.assert_true((count["inverse T1"] or 0) >= 3, "the small triangles collapse",
               tostring(count["inverse T1"]))
+-- a film of this foam (surface 380 at b9b8141) has a waist of 0.03 between two of its lines,
+-- below the T1 length, that shrinks in the first step: it is pinched (a periodic pinch)
+T.assert_true((count["film pinch"] or 0) >= 1, "a film's closing waist is pinched",
+              tostring(count["film pinch"]))
 -- no transition undoes another of the same step: the two cells an inverse T1 parts are not
 -- joined again by a T1 (at a tangle of small junctions they were, step after step)
 local parted = {}
