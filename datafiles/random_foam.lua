@@ -28,7 +28,12 @@ local r = c:minimize{max_iterations = opts.max_iterations, transitions = opts.tr
 print(("minimize: %d iterations in %.2f s, residual %.3g, volume error %.2g"):format(r.iterations, r.wall_s,
       r.residual, r.volume_error))
 if r.events then
-  print(("%d transitions in %d rounds"):format(#r.events, r.rounds))
+  local counts, kinds = {}, {}
+  for _, e in ipairs(r.events) do counts[e.kind] = (counts[e.kind] or 0) + 1 end
+  for kind, k in pairs(counts) do kinds[#kinds + 1] = ("%d %s"):format(k, kind) end
+  table.sort(kinds)
+  print(("%d transitions in %d rounds%s%s"):format(#r.events, r.rounds, #kinds > 0 and ": " or "",
+                                                   table.concat(kinds, ", ")))
 end
 print(("cost %.5f; stop: %s"):format(2 * r.energy / n, r.stop_reason))
 local path = opts.output .. "/random_foam.vtu"

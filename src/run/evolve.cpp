@@ -549,7 +549,7 @@ class Run {
     /// there (JunctionTransitions::pinch); false if none can.
     bool pinch_film(bool due) {
         TransitionEvent event;
-        const double below = due ? o_.watch.min_line_fraction * mean_edge_length(c_) : collapse_limit();
+        const double below = due ? junctions_.t1_length(c_) : collapse_limit();
         return take_transition(junctions_.pinch(c_, below, !due, original_body_, event), event);
     }
     bool pinch_films() { return pinch_film(false); }

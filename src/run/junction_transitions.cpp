@@ -428,11 +428,15 @@ std::optional<Cluster> JunctionTransitions::try_make(const Cluster& c, const Jun
     }
 }
 
+double JunctionTransitions::t1_length(const Cluster& c) const {
+    return fraction_ * mean_edge_length(c);
+}
+
 std::optional<Cluster> JunctionTransitions::pinch(const Cluster& c, double max_length, bool force,
                                                   const std::vector<int>& original_body,
                                                   TransitionEvent& event) {
     if (const std::uint64_t now = mesh_fingerprint(c); now != mesh_) refusals_.clear(), mesh_ = now;
-    const double limit = fraction_ * mean_edge_length(c);
+    const double limit = t1_length(c);
     for (const FilmWaist& w : waists(c, max_length, original_body)) {
         const std::vector<int> cells(w.cells.begin(), w.cells.end());
         const auto was = waist_sizes_.find(cells);

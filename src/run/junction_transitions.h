@@ -95,6 +95,9 @@ class JunctionTransitions {
     /// refused() says why the due ones could not be made).
     std::optional<Cluster> make(const Cluster& c, bool films, bool force,
                                 const std::vector<int>& original_body, TransitionEvent& event);
+    /// The T1 length of c: min_line_fraction of its mean edge, below which a line is due for
+    /// a T1 and a film's waist for a pinch.
+    double t1_length(const Cluster& c) const;
     /// The pinch (pinch_film) at the shortest edge below max_length across a film between two
     /// of its lines (pinched_film_edges) that the mesh lets be made without crossings: the
     /// film's waist closing, as a short line is a T1's. Unless forced, not where it would give

@@ -20,7 +20,8 @@ bool stopped_on_a_facet(const MinimizeResult& r) {
     return r.stop_reason.rfind("topology: a facet angle", 0) == 0;
 }
 
-/// The due transitions of one look, inverse T1s first; with `force` every small junction.
+/// The due transitions of one look, inverse T1s first, then T1s, then pinches of closing
+/// waists; with `force` every small junction and waist.
 int make_transitions(Cluster& c, JunctionTransitions& junctions, bool force, int round,
                      const std::vector<int>& bodies, std::vector<TransitionEvent>& events) {
     constexpr int kMaxPerRound = 64; // a bound, should transitions cycle
@@ -29,6 +30,7 @@ int make_transitions(Cluster& c, JunctionTransitions& junctions, bool force, int
         TransitionEvent event;
         std::optional<Cluster> changed = junctions.make(c, true, force, bodies, event);
         if (!changed) changed = junctions.make(c, false, force, bodies, event);
+        if (!changed) changed = junctions.pinch(c, junctions.t1_length(c), force, bodies, event);
         if (!changed) break;
         c = std::move(*changed);
         event.step = round;
