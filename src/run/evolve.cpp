@@ -554,6 +554,7 @@ class Run {
     }
     bool pinch_films() { return pinch_film(false); }
 
+    /// A transition's cluster (none: false) replaces the run's, with its event recorded.
     bool take_transition(std::optional<Cluster> changed, TransitionEvent& event) {
         if (!changed) return false;
         event.step = r_.steps;
