@@ -199,9 +199,6 @@ Cluster DiscCaps::run(TransitionRecord* record) {
             throw TopologyError(name_ + ": a cap's apex is not inside one film");
 
     if (record) {
-        const auto cell = [](int k) {
-            return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
-        };
         record->kind = "disc film";
         record->capped = true;
         record->size = radius_;
@@ -210,9 +207,10 @@ Cluster DiscCaps::run(TransitionRecord* record) {
         record->point = centre_;
         record->removed_vertices = c_.n_vertices() - r.n_vertices();
         record->removed_facets = c_.n_facets() - r.n_facets();
-        record->where = "disc film " + std::to_string(film_ + 1) + " between " + cell(d_) +
-                        " and " + cell(e_) + " (closed triple line " + std::to_string(line_ + 1) +
-                        " of length " + fmt(perimeter_) + ") closed by caps: " + cell(x_) +
+        record->where = "disc film " + std::to_string(film_ + 1) + " between " +
+                        surgery::cell_name(d_) + " and " + surgery::cell_name(e_) +
+                        " (closed triple line " + std::to_string(line_ + 1) + " of length " +
+                        fmt(perimeter_) + ") closed by caps: " + surgery::cell_name(x_) +
                         " closes between them at " + point_text(centre_);
     }
     return r;

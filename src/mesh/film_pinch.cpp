@@ -31,19 +31,10 @@ int index_of(const Tri& t, int v) {
     return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
 }
 
-std::string cell_name(int k) {
-    return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
+/// Where x is in a fan's link (its size if nowhere).
+int position_in(const surgery::BorderFan& fan, int x) {
+    return static_cast<int>(std::find(fan.link.begin(), fan.link.end(), x) - fan.link.begin());
 }
-
-/// The fan of a surface at a vertex on its border: the link vertices u_0 .. u_n in order and
-/// the facet (v, u_j, u_{j+1}) of each link edge j.
-struct Fan {
-    std::vector<int> link;
-    std::vector<int> facets;
-    int position_of(int x) const {
-        return static_cast<int>(std::find(link.begin(), link.end(), x) - link.begin());
-    }
-};
 
 class FilmPinch {
   public:
@@ -56,7 +47,6 @@ class FilmPinch {
 
   private:
     void find_films();
-    Fan fan_of(int v) const;
     void split_sides();
     int line_of(int v) const;
     Vec3 unwrapped_neighbour(int v, const Vec3& at_v, int x) const;
@@ -74,17 +64,17 @@ class FilmPinch {
     const bool fit_;
     const std::string name_;
     const std::vector<std::array<int, 2>> cells_;
-    int film_ = -1;             // F
+    int film_ = -1; // F
     int A_ = -1, B_ = -1, C_ = -1, D_ = -1;
     std::array<int, 2> at_u_{}; // the films A|C and B|C
     std::array<int, 2> at_w_{}; // A|D and B|D
     std::set<int> p_facets_;    // F's facets at u or w that take p (the others at them, q)
     std::set<int> bridge_;      // F's two facets at the edge
     int u1_ = -1, u2_ = -1, w1_ = -1, w2_ = -1; // the lines' neighbours of u, w on p's side, q's
-    Offset dw_{};               // w's lattice offset in u's frame
-    Vec3 xw_ = Vec3::Zero();    // w unwrapped in u's frame
+    Offset dw_{};                               // w's lattice offset in u's frame
+    Vec3 xw_ = Vec3::Zero();                    // w unwrapped in u's frame
     std::vector<surgery::MovedFacet> moved_;
-    int n_ = 0;                 // c's vertex count: p, q, r are n_, n_ + 1, n_ + 2
+    int n_ = 0; // c's vertex count: p, q, r are n_, n_ + 1, n_ + 2
     double side_ = 0;
     bool fitted_ = false;
 };
@@ -125,57 +115,37 @@ void FilmPinch::find_films() {
     };
     C_ = third(su, at_u_), D_ = third(sw, at_w_);
     if (C_ == -2 || D_ == -2 || C_ == A_ || C_ == B_ || D_ == A_ || D_ == B_)
-        throw TopologyError(name_ + ": the films at its ends are not those of two triple lines "
-                            "along surface " + std::to_string(film_ + 1));
+        throw TopologyError(name_ +
+                            ": the films at its ends are not those of two triple lines "
+                            "along surface " +
+                            std::to_string(film_ + 1));
     if (C_ == D_)
-        throw TopologyError(name_ + ": the same cell (" + cell_name(C_) + ") lies beyond both "
+        throw TopologyError(name_ + ": the same cell (" + surgery::cell_name(C_) +
+                            ") lies beyond both "
                             "lines; it would meet itself across surface " +
                             std::to_string(film_ + 1));
-}
-
-/// F's fan at v, which lies on F's border: a path of link vertices.
-Fan FilmPinch::fan_of(int v) const {
-    const Surface& s = c_.surface(film_);
-    std::map<int, int> next, facet_from;
-    std::set<int> targets;
-    for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-        const Tri& t = s.triangles[f];
-        const int j = index_of(t, v);
-        if (j == 3) continue;
-        const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
-        if (!next.emplace(x, y).second || !targets.insert(y).second)
-            throw TopologyError(name_ + ": surface " + std::to_string(film_ + 1) +
-                                " is folded at vertex " + std::to_string(v + 1));
-        facet_from[x] = static_cast<int>(f);
-    }
-    Fan fan;
-    for (const auto& [x, y] : next)
-        if (!targets.count(x)) fan.link = {x};
-    while (!fan.link.empty() && next.count(fan.link.back()) && fan.facets.size() < next.size()) {
-        fan.facets.push_back(facet_from[fan.link.back()]);
-        fan.link.push_back(next[fan.link.back()]);
-    }
-    if (fan.link.empty() || fan.facets.size() != next.size())
-        throw TopologyError(name_ + ": surface " + std::to_string(film_ + 1) +
-                            " does not end in one fan at vertex " + std::to_string(v + 1));
-    return fan;
 }
 
 /// Which of F's facets at u and w take p: at u those before the edge in its fan (the edge's
 /// facet (u, x, w) last), at w those after it (the same facet is (w, u, x) there, first).
 void FilmPinch::split_sides() {
-    const Fan at_u = fan_of(u_), at_w = fan_of(w_);
-    const int iw = at_u.position_of(w_), iu = at_w.position_of(u_);
+    const auto& triangles = c_.surface(film_).triangles;
+    const surgery::BorderFan at_u = surgery::border_fan(triangles, u_, name_, film_);
+    const surgery::BorderFan at_w = surgery::border_fan(triangles, w_, name_, film_);
+    const int iw = position_in(at_u, w_), iu = position_in(at_w, u_);
     const int nu = static_cast<int>(at_u.facets.size()), nw = static_cast<int>(at_w.facets.size());
     if (iw <= 0 || iw >= nu || iu <= 0 || iu >= nw)
         throw TopologyError(name_ + ": the edge lies on the border of surface " +
                             std::to_string(film_ + 1) + ", not across it");
     bridge_ = {at_u.facets[iw - 1], at_u.facets[iw]};
-    for (int j = 0; j < iw - 1; ++j) p_facets_.insert(at_u.facets[j]);
-    for (int j = iu + 1; j < nw; ++j) p_facets_.insert(at_w.facets[j]);
+    for (int j = 0; j < iw - 1; ++j)
+        p_facets_.insert(at_u.facets[j]);
+    for (int j = iu + 1; j < nw; ++j)
+        p_facets_.insert(at_w.facets[j]);
     // each corner keeps a fan of F, or F would lose its border there
     if (p_facets_.empty() || (iw + 1 >= nu && iu - 1 <= 0))
-        throw TopologyError(name_ + ": surface " + std::to_string(film_ + 1) + " has no facet "
+        throw TopologyError(name_ + ": surface " + std::to_string(film_ + 1) +
+                            " has no facet "
                             "beside the edge on one side; refine the mesh there first");
     u1_ = at_u.link.front(), u2_ = at_u.link.back();
     w1_ = at_w.link.back(), w2_ = at_w.link.front();
@@ -213,12 +183,13 @@ void FilmPinch::rewrite_film(ClusterSpec& spec) {
         for (int j = 0; j < 3; ++j) {
             if (t[j] != u_ && t[j] != w_) continue;
             if (t[j] == w_)
-                for (int x = 0; x < 3; ++x) k[j][x] -= dw_[x];
+                for (int x = 0; x < 3; ++x)
+                    k[j][x] -= dw_[x];
             t[j] = corner, moved = true;
         }
         if (moved)
-            moved_.push_back({film_, static_cast<int>(out.triangles.size()),
-                              surgery::facet_area(c_, film_, f)});
+            moved_.push_back(
+                {film_, static_cast<int>(out.triangles.size()), surgery::facet_area(c_, film_, f)});
         out.triangles.push_back(t);
         if (spec.period) out.offsets.push_back(k);
     }
@@ -232,9 +203,11 @@ int FilmPinch::part_film(ClusterSpec& spec) {
     ClusterSpec::Surface& s = spec.surfaces[film_];
     const std::size_t n = s.triangles.size();
     std::vector<int> parent(n);
-    for (std::size_t f = 0; f < n; ++f) parent[f] = static_cast<int>(f);
+    for (std::size_t f = 0; f < n; ++f)
+        parent[f] = static_cast<int>(f);
     const auto find = [&](int f) {
-        while (parent[f] != f) f = parent[f] = parent[parent[f]];
+        while (parent[f] != f)
+            f = parent[f] = parent[parent[f]];
         return f;
     };
     std::map<std::tuple<int, int, int, int, int>, int> first_at; // (lo, hi, offset hi - lo)
@@ -244,8 +217,10 @@ int FilmPinch::part_film(ClusterSpec& spec) {
             if (s.triangles[f][a] > s.triangles[f][b]) std::swap(a, b);
             Offset d{};
             if (!s.offsets.empty())
-                for (int x = 0; x < 3; ++x) d[x] = s.offsets[f][b][x] - s.offsets[f][a][x];
-            const auto key = std::make_tuple(s.triangles[f][a], s.triangles[f][b], d[0], d[1], d[2]);
+                for (int x = 0; x < 3; ++x)
+                    d[x] = s.offsets[f][b][x] - s.offsets[f][a][x];
+            const auto key =
+                std::make_tuple(s.triangles[f][a], s.triangles[f][b], d[0], d[1], d[2]);
             const auto [it, fresh] = first_at.emplace(key, static_cast<int>(f));
             if (!fresh) parent[find(static_cast<int>(f))] = find(it->second);
         }
@@ -290,8 +265,10 @@ void FilmPinch::split_fans(ClusterSpec& spec) {
             throw TopologyError(name_ + ": a film at its ends does not end on the lines there");
         };
     };
-    for (int s : at_u_) surgery::split_fan(c_, spec, s, u_, Offset{}, towards(u1_, u2_), moved_, name_);
-    for (int s : at_w_) surgery::split_fan(c_, spec, s, w_, dw_, towards(w1_, w2_), moved_, name_);
+    for (int s : at_u_)
+        surgery::split_fan(c_, spec, s, u_, Offset{}, towards(u1_, u2_), moved_, name_);
+    for (int s : at_w_)
+        surgery::split_fan(c_, spec, s, w_, dw_, towards(w1_, w2_), moved_, name_);
 }
 
 /// r on the gap edge of B's films, and the lens (p, q, r) between C and D with the tension,
@@ -369,8 +346,8 @@ void FilmPinch::place_corners(double side, std::vector<Vec3>& V) const {
 /// first down, halving (at most ten times), at which no facet turns over, the corners moved
 /// off slivers where needed (surgery::fit_corners) so long as the lens keeps half its area.
 std::vector<Vec3> FilmPinch::place_lens(const ClusterSpec& spec) {
-    const double first = std::max(
-        min_side_, 0.5 * (surgery::mean_edge_at(c_, u_) + surgery::mean_edge_at(c_, w_)));
+    const double first =
+        std::max(min_side_, 0.5 * (surgery::mean_edge_at(c_, u_) + surgery::mean_edge_at(c_, w_)));
     std::vector<Vec3> V = c_.positions();
     V.resize(n_ + 3);
     const auto area = [&](const std::vector<Vec3>& X) {
@@ -413,7 +390,8 @@ Cluster FilmPinch::run(TransitionRecord* record) {
     std::vector<Vec3> V = place_lens(spec);
 
     const std::vector<int> used = surgery::keep_used_vertices(spec, V);
-    surgery::copy_vertex_lists(c_, [&](int v) { return used[v]; }, spec);
+    surgery::copy_vertex_lists(
+        c_, [&](int v) { return used[v]; }, spec);
     Cluster r = surgery::rebuild(std::move(spec), name_, "the pinch");
     for (int i = 0; i < 3; ++i)
         if (r.vertex_junction_edges(used[n_ + i]).size() != (i < 2 ? 4u : 2u))
@@ -438,14 +416,15 @@ Cluster FilmPinch::run(TransitionRecord* record) {
         record->point = mid;
         record->removed_vertices = 2;
         record->removed_facets = 2; // F's at the edge
-        record->where = "surface " + std::to_string(film_ + 1) + " between " + cell_name(A_) +
-                        " and " + cell_name(B_) + ", pinched between triple lines " +
-                        std::to_string(line_u + 1) + " and " + std::to_string(line_w + 1) +
-                        " (edge " + std::to_string(u_ + 1) + "-" + std::to_string(w_ + 1) +
-                        ", length " + fmt((xw_ - c_.position(u_)).norm()) + "), parted " +
-                        (parted >= 0 ? "in two" : "but stays one film") +
+        record->where = "surface " + std::to_string(film_ + 1) + " between " +
+                        surgery::cell_name(A_) + " and " + surgery::cell_name(B_) +
+                        ", pinched between triple lines " + std::to_string(line_u + 1) + " and " +
+                        std::to_string(line_w + 1) + " (edge " + std::to_string(u_ + 1) + "-" +
+                        std::to_string(w_ + 1) + ", length " + fmt((xw_ - c_.position(u_)).norm()) +
+                        "), parted " + (parted >= 0 ? "in two" : "but stays one film") +
                         "; a two-sided film of side " + fmt(side_) + " between " +
-                        cell_name(C_) + " and " + cell_name(D_) + " at " + point_text(mid);
+                        surgery::cell_name(C_) + " and " + surgery::cell_name(D_) + " at " +
+                        point_text(mid);
     }
     return r;
 }
@@ -479,7 +458,8 @@ Cluster part_fans_from_lines(const Cluster& c, int u, int w) {
                     split.insert({std::min(v, x), std::max(v, x)});
         }
     Cluster out = c;
-    for (const auto& [a, b] : split) out = surgery::split_edge(out, a, b, 0.5);
+    for (const auto& [a, b] : split)
+        out = surgery::split_edge(out, a, b, 0.5);
     return out;
 }
 
@@ -489,8 +469,10 @@ Cluster pinch_film(const Cluster& c, int u, int w, TransitionRecord* record, dou
                    bool fit_corners) {
     for (int v : {u, w})
         if (v < 0 || v >= c.n_vertices())
-            throw InvalidInput("pinch_film: vertex " + std::to_string(v + 1) + " does not exist (the "
-                               "cluster has " + std::to_string(c.n_vertices()) + ")");
+            throw InvalidInput("pinch_film: vertex " + std::to_string(v + 1) +
+                               " does not exist (the "
+                               "cluster has " +
+                               std::to_string(c.n_vertices()) + ")");
     if (u == w) throw InvalidInput("pinch_film: the edge's two vertices are the same");
     const Cluster parted = part_fans_from_lines(c, u, w);
     return FilmPinch(parted, u, w, min_side, fit_corners).run(record);
@@ -508,7 +490,8 @@ std::vector<FilmWaist> film_waists(const Cluster& c, double shorter_than) {
         for (int v : lines[l].vertices)
             if (rank[v] == 1) line[v] = static_cast<int>(l);
     std::vector<std::vector<int>> along(c.n_vertices()); // neighbours along the lines
-    for (const JunctionEdge& e : c.junction_edges()) along[e.a].push_back(e.b), along[e.b].push_back(e.a);
+    for (const JunctionEdge& e : c.junction_edges())
+        along[e.a].push_back(e.b), along[e.b].push_back(e.a);
     // within three edges along the lines: a film's corner, which zip_slit's upkeep narrows
     const auto near_along = [&](int a, int b) {
         std::set<int> reached{a};

@@ -263,9 +263,7 @@ Cluster T1::run(TransitionRecord* record) {
     b_ = end_at(seg_.back());
     const bool self = a_.cell == b_.cell; // the cell meets itself across the line
     if (self && !meets_itself_)
-        throw TopologyError(name_ + ": the same cell (" +
-                            (a_.cell < 0 ? std::string("the outside")
-                                         : "body " + std::to_string(a_.cell + 1)) +
+        throw TopologyError(name_ + ": the same cell (" + surgery::cell_name(a_.cell) +
                             ") meets both its ends; it may meet itself across the line only "
                             "when forced");
     unwrap_line();
@@ -306,9 +304,6 @@ Cluster T1::run(TransitionRecord* record) {
     }
 
     if (record) {
-        const auto cell_name = [](int k) {
-            return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
-        };
         const Vec3 mid = 0.5 * (u_[seg_.front()] + u_[seg_.back()]);
         record->kind = "T1";
         record->fitted = fitted_;
@@ -319,14 +314,15 @@ Cluster T1::run(TransitionRecord* record) {
         record->removed_vertices = static_cast<int>(seg_.size());
         // a gap facet per fan, and the film
         record->removed_facets = c_.n_facets() + (self ? 6 : 7) - r.n_facets();
-        record->where = "triple line " + std::to_string(shown_ + 1) + " (length " + fmt(length_) +
-                        ", vertices " + std::to_string(seg_.front() + 1) + " .. " +
-                        std::to_string(seg_.back() + 1) + ") became " +
-                        (self ? "a gap of side " + fmt(side_) + " through which " +
-                                    cell_name(a_.cell) + " meets itself"
-                              : "a film of side " + fmt(side_) + " between " +
-                                    cell_name(a_.cell) + " and " + cell_name(b_.cell)) +
-                        " at " + point_text(mid);
+        record->where =
+            "triple line " + std::to_string(shown_ + 1) + " (length " + fmt(length_) +
+            ", vertices " + std::to_string(seg_.front() + 1) + " .. " +
+            std::to_string(seg_.back() + 1) + ") became " +
+            (self ? "a gap of side " + fmt(side_) + " through which " +
+                        surgery::cell_name(a_.cell) + " meets itself"
+                  : "a film of side " + fmt(side_) + " between " + surgery::cell_name(a_.cell) +
+                        " and " + surgery::cell_name(b_.cell)) +
+            " at " + point_text(mid);
     }
     return r;
 }

@@ -38,10 +38,6 @@
 namespace froth {
 namespace {
 
-std::string body_name(int k) {
-    return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
-}
-
 /// One side of the film: triple line l_X and the two other films along it.
 constexpr int kNoCell = -2; // -1 is the outside
 
@@ -111,7 +107,8 @@ void InverseT1::check_film() {
     d_cell_ = cells_[film_][0];
     e_cell_ = cells_[film_][1];
     if (d_cell_ == e_cell_)
-        throw TopologyError(name_ + " lies between " + body_name(d_cell_) + " and itself; only "
+        throw TopologyError(name_ + " lies between " + surgery::cell_name(d_cell_) +
+                            " and itself; only "
                             "a film between two cells can collapse to a line");
     const Surface& s = c_.surface(film_);
     std::set<std::pair<int, int>> edges;
@@ -147,9 +144,10 @@ Side InverseT1::side_of(int line) const {
         side.cell = x;
     }
     if (side.film_d < 0 || side.film_e < 0 || side.cell == d_cell_ || side.cell == e_cell_)
-        throw TopologyError(name_ + ": triple line " + std::to_string(line + 1) + " on its "
+        throw TopologyError(name_ + ": triple line " + std::to_string(line + 1) +
+                            " on its "
                             "border does not join it to the films of one third cell with " +
-                            body_name(d_cell_) + " and " + body_name(e_cell_));
+                            surgery::cell_name(d_cell_) + " and " + surgery::cell_name(e_cell_));
     return side;
 }
 
@@ -190,7 +188,7 @@ void InverseT1::find_sides() {
     if (static_cast<int>(ends.size()) != n_sides_ || static_cast<int>(cells.size()) != n_sides_)
         throw TopologyError(name_ + ": the cells around its border are not " +
                             (n_sides_ == 3 ? "three" : "two") + " distinct ones besides " +
-                            body_name(d_cell_) + " and " + body_name(e_cell_));
+                            surgery::cell_name(d_cell_) + " and " + surgery::cell_name(e_cell_));
 }
 
 /// What this collapse takes, for the messages.
@@ -351,11 +349,14 @@ std::string InverseT1::where() const {
     for (const Side& side : sides_) {
         lines += (lines.empty() ? "" : ", ") + std::to_string(side.line + 1) + " (" +
                  fmt(side.length) + ")";
-        cells += (cells.empty() ? "" : side.line == sides_.back().line ? " and " : ", ") +
-                 body_name(side.cell);
+        cells += (cells.empty()                     ? ""
+                  : side.line == sides_.back().line ? " and "
+                                                    : ", ") +
+                 surgery::cell_name(side.cell);
     }
-    const std::string film = std::to_string(film_ + 1) + " between " + body_name(d_cell_) +
-                             " and " + body_name(e_cell_) + " (triple lines " + lines + ")";
+    const std::string film = std::to_string(film_ + 1) + " between " + surgery::cell_name(d_cell_) +
+                             " and " + surgery::cell_name(e_cell_) + " (triple lines " + lines +
+                             ")";
     if (n_sides_ == 2)
         return "two-sided film " + film + " collapsed: " + cells + " meet across it at " +
                point_text(centre_);

@@ -13,6 +13,10 @@
 
 namespace froth::surgery {
 
+std::string cell_name(int k) {
+    return k < 0 ? std::string("the outside") : "body " + std::to_string(k + 1);
+}
+
 std::vector<int> keep_used_vertices(ClusterSpec& spec, const std::vector<Vec3>& V) {
     std::vector<int> used(V.size(), -1);
     for (const auto& s : spec.surfaces)
@@ -234,26 +238,16 @@ void collapse_onto(const Cluster& c, ClusterSpec& spec, int si, const std::map<i
     s = std::move(out);
 }
 
-void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset& dv,
-               const std::function<int(int)>& corner_towards, std::vector<MovedFacet>& moved,
-               const std::string& what) {
-    ClusterSpec::Surface& s = spec.surfaces[si];
-    const std::string at = "surface " + std::to_string(si + 1);
+BorderFan border_fan(const std::vector<Tri>& triangles, int v, const std::string& what,
+                     int surface) {
+    const std::string at = "surface " + std::to_string(surface + 1);
     const std::string vertex = " vertex " + std::to_string(v + 1);
     std::map<int, int> next, facet_from; // link u_j -> u_{j+1}, and its facet
     std::set<int> targets;
-    const std::size_t in_c = c.surface(si).triangles.size();
-    for (std::size_t f = 0; f < s.triangles.size(); ++f) {
-        const Tri& t = s.triangles[f];
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+        const Tri& t = triangles[f];
         const int j = index_of(t, v);
         if (j == 3) continue;
-        // a facet appended by the split of another fan of this transition (its gap facet)
-        // reaches v (a T1 of a cell that meets itself: one film with fans at both ends):
-        // the facet has no area in c to test its turn against (it was read out of c's
-        // bounds: a crash of the 200-grain network at t = 0.6759)
-        if (f >= in_c)
-            throw TopologyError(what + ": " + at + " joins its fans at" + vertex +
-                                " and at another corner of the transition across one facet");
         const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
         if (!next.emplace(x, y).second || !targets.insert(y).second)
             throw TopologyError(what + ": " + at + " is folded at" + vertex);
@@ -264,14 +258,35 @@ void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset&
         if (!targets.count(x)) start = x;
     if (start < 0)
         throw TopologyError(what + ": " + at + " surrounds" + vertex + "; it must end there");
-    std::vector<int> u{start};
-    while (next.count(u.back()) && u.size() <= next.size()) u.push_back(next[u.back()]);
-    if (u.size() != next.size() + 1)
+    BorderFan fan{{start}, {}};
+    while (next.count(fan.link.back()) && fan.facets.size() < next.size()) {
+        fan.facets.push_back(facet_from[fan.link.back()]);
+        fan.link.push_back(next[fan.link.back()]);
+    }
+    if (fan.facets.size() != next.size())
         throw TopologyError(what + ": " + at + " is pinched at" + vertex);
+    return fan;
+}
+
+void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset& dv,
+               const std::function<int(int)>& corner_towards, std::vector<MovedFacet>& moved,
+               const std::string& what) {
+    ClusterSpec::Surface& s = spec.surfaces[si];
+    // a facet appended by the split of another fan of this transition (its gap facet)
+    // reaches v (a T1 of a cell that meets itself: one film with fans at both ends):
+    // the facet has no area in c to test its turn against (it was read out of c's
+    // bounds: a crash of the 200-grain network at t = 0.6759)
+    for (std::size_t f = c.surface(si).triangles.size(); f < s.triangles.size(); ++f)
+        if (index_of(s.triangles[f], v) < 3)
+            throw TopologyError(what + ": surface " + std::to_string(si + 1) +
+                                " joins its fans at vertex " + std::to_string(v + 1) +
+                                " and at another corner of the transition across one facet");
+    const BorderFan fan = border_fan(s.triangles, v, what, si);
+    const std::vector<int>& u = fan.link;
     const int p = corner_towards(u.front()), q = corner_towards(u.back());
     const int n = static_cast<int>(u.size()) - 1, m = (n + 1) / 2;
     for (int j = 0; j < n; ++j) {
-        const int f = facet_from[u[j]];
+        const int f = fan.facets[j];
         const int k = index_of(s.triangles[f], v);
         moved.push_back({si, f, facet_area(c, si, f)});
         s.triangles[f][k] = j < m ? p : q;
@@ -279,7 +294,7 @@ void split_fan(const Cluster& c, ClusterSpec& spec, int si, int v, const Offset&
             for (int x = 0; x < 3; ++x) s.offsets[f][k][x] -= dv[x];
     }
     // the gap facet, in the frame of facet m - 1 (which holds p, u_{m-1}, u_m)
-    const int g = facet_from[u[m - 1]];
+    const int g = fan.facets[m - 1];
     s.triangles.push_back({p, u[m], q});
     if (!s.offsets.empty()) {
         const Tri& t = s.triangles[g];

@@ -15,6 +15,9 @@
 
 namespace froth::surgery {
 
+/// "body k+1", or "the outside" for k < 0: a cell in transitions' messages and records.
+std::string cell_name(int k);
+
 /// Drops the vertices of V that no facet of spec uses: spec.vertices becomes the used ones in
 /// order and the triangles are renumbered. Returns the map from V's ids to the new ones (-1:
 /// dropped).
@@ -73,6 +76,16 @@ struct MovedFacet {
 /// \throw TopologyError "<what>: ..." if p's facets would not form one fan.
 void collapse_onto(const Cluster& c, ClusterSpec& spec, int si, const std::map<int, Offset>& d,
                    int p, std::vector<MovedFacet>& moved, const std::string& what);
+
+/// The fan of `triangles` (one surface's) at v, a vertex on its border: the link vertices
+/// u_0 .. u_n in order and the facet (v, u_j, u_{j+1}) of each link edge j.
+struct BorderFan {
+    std::vector<int> link;
+    std::vector<int> facets;
+};
+/// \throw TopologyError "<what>: surface N is folded at / surrounds / is pinched at vertex M"
+BorderFan border_fan(const std::vector<Tri>& triangles, int v, const std::string& what,
+                     int surface);
 
 /// Surface si of spec (c's facets, or with facets appended): its fan at vertex v, facets
 /// (v, u_j, u_{j+1}) from u_0 to u_n along its link, splits between the new corners
