@@ -14,7 +14,7 @@
 --               FROTH_SMOKE=1 froth datafiles/random_foam.lua  (ctest: 16 cells, 5 iterations)
 local script = require("froth.script")
 local opts = script.options({n = 64, seed = 1, lloyd = 50, h = 0.4, mesher = "", max_iterations = 1000,
-                             transitions = 0, output = "out"}, arg)
+                             transitions = 0, settle = 0, output = "out"}, arg)
 if opts.smoke then opts.n, opts.max_iterations = 16, 5 end
 local mesher = opts.mesher ~= "" and opts.mesher or nil
 
@@ -24,7 +24,8 @@ local n = info.bodies
 print(("%d cells (seed %d, %d Lloyd steps): %d films, %d triple lines, %d quadruple points; %d vertices")
       :format(n, opts.seed, opts.lloyd, info.surfaces, #c:triple_lines(), #c:quadruple_points(), info.vertices))
 print(("flat cells: cost %.5f"):format(2 * c:energy() / n))
-local r = c:minimize{max_iterations = opts.max_iterations, transitions = opts.transitions ~= 0}
+local r = c:minimize{max_iterations = opts.max_iterations, transitions = opts.transitions ~= 0,
+                     settle = opts.settle}
 print(("minimize: %d iterations in %.2f s, residual %.3g, volume error %.2g"):format(r.iterations, r.wall_s,
       r.residual, r.volume_error))
 if r.events then

@@ -43,8 +43,8 @@ void push_minimize_result(lua_State* L, const MinimizeResult& r,
     lua_setfield(L, -2, "events");
 }
 
-/// c:minimize{tol, max_iterations, tau_start, tau_growth, tau_max, volume_tol, transitions,
-/// min_line_fraction}
+/// c:minimize{tol, max_iterations, tau_start, tau_growth, tau_max, volume_tol, settle,
+/// settle_window, transitions, min_line_fraction}
 int l_minimize(lua_State* L) {
     ClusterHandle& h = self(L);
     ChangeGuard change(L, h, "minimize");
@@ -57,6 +57,8 @@ int l_minimize(lua_State* L) {
     m.tau_growth = o.number("tau_growth", m.tau_growth);
     m.tau_max = o.number("tau_max", m.tau_max);
     m.volume_tol = o.number("volume_tol", m.volume_tol);
+    m.settle = o.number("settle", m.settle);
+    m.settle_window = static_cast<int>(o.integer("settle_window", m.settle_window));
     const bool transitions = o.boolean("transitions", false);
     t.min_line_fraction = o.number("min_line_fraction", t.min_line_fraction);
     if (!(t.min_line_fraction > 0 && t.min_line_fraction < 1))

@@ -122,6 +122,12 @@ void check(const MinimizeOptions& o) {
     if (!(std::isfinite(o.volume_tol) && o.volume_tol > 0))
         throw InvalidInput("minimize: volume_tol must be positive and finite, got " +
                            fmt(o.volume_tol));
+    if (!(std::isfinite(o.settle) && o.settle >= 0))
+        throw InvalidInput("minimize: settle must be 0 or positive and finite, got " +
+                           fmt(o.settle));
+    if (o.settle_window < 1)
+        throw InvalidInput("minimize: settle_window must be at least 1, got " +
+                           std::to_string(o.settle_window));
 }
 
 /// Solves K U = B column by column with one fresh factorisation, where K is the step's
@@ -196,8 +202,8 @@ std::vector<Vec3> unflatten(const Eigen::VectorXd& x) {
 
 class Minimizer {
   public:
-    Minimizer(Cluster& c, const MinimizeOptions& o, LaggedSchurComplement* schur)
-        : c_(c), o_(o), system_(c), schur_(schur ? *schur : own_schur_) {
+    Minimizer(Cluster& c, const MinimizeOptions& o, MinimizeCarry* carry)
+        : c_(c), o_(o), system_(c), carry_(carry ? *carry : own_carry_) {
         double area = 0;
         for (double a : surface_areas(c)) area += a;
         R2_ = area / (4 * M_PI);
@@ -248,6 +254,7 @@ class Minimizer {
                                     " of their area (nothing holds them: no body, no wall)";
                     break;
                 }
+                if (settled(r)) break;
                 const double angle = min_facet_angle(c_.positions());
                 if (angle < std::min(kDegenerateAngle, 0.5 * start_angle)) {
                     r.stop_reason = "topology: a facet angle fell to " + fmt(angle) +
@@ -275,6 +282,22 @@ class Minimizer {
     }
 
   private:
+    /// Records the energy of the step just accepted; true (r.stop_reason set) if it moved by at
+    /// most settle |E| over the last settle_window steps (MinimizeOptions::settle).
+    bool settled(MinimizeResult& r) {
+        std::vector<double>& E = carry_.energies;
+        E.push_back(energy(c_));
+        const std::size_t n = static_cast<std::size_t>(o_.settle_window) + 1;
+        if (E.size() > n) E.erase(E.begin(), E.end() - static_cast<std::ptrdiff_t>(n));
+        if (o_.settle <= 0 || E.size() < n) return false;
+        // a rise (a transition's or the upkeep's between rounds) is no more settled than a fall
+        const double drop = (E.front() - E.back()) / std::abs(E.back());
+        if (!(std::abs(drop) <= o_.settle)) return false;
+        r.stop_reason = "settled: the energy changed by " + fmt(-drop) + " of itself in the last " +
+                        std::to_string(o_.settle_window) + " steps";
+        return true;
+    }
+
     /// One step at the current tau (accelerated at the largest tau); false (cluster unchanged)
     /// if it collapses a facet or raises the energy by more than the volume correction accounts
     /// for.
@@ -303,7 +326,7 @@ class Minimizer {
         Eigen::VectorXd dV(c_.n_volume_constraints());
         for (int b = 0; b < c_.n_volume_constraints(); ++b) dV[b] = c_.target_volumes()[b] - V[b];
         Eigen::VectorXd p;
-        const Eigen::VectorXd y = constrained_step(system_, fresh, schur_, d, dV, p);
+        const Eigen::VectorXd y = constrained_step(system_, fresh, carry_.schur, d, dV, p);
         std::vector<Vec3> X = c_.positions();
         for (int v = 0; v < c_.n_vertices(); ++v) X[v] += P.displacement(y, v);
         if (!all_walls_flat_) project_onto_walls_of(c_, X);
@@ -419,8 +442,8 @@ class Minimizer {
     double R2_ = 1, tau_ = 1;
     bool all_walls_flat_ = true;
     StepSystem system_;
-    LaggedSchurComplement own_schur_; // S of an earlier step, the preconditioner for many bodies
-    LaggedSchurComplement& schur_;    // own_schur_ or the caller's
+    MinimizeCarry own_carry_;
+    MinimizeCarry& carry_; // own_carry_ or the caller's
     Anderson anderson_{8};
 };
 
@@ -433,15 +456,14 @@ EquilibriumState equilibrium_state(const Cluster& c) {
     return balance(first_variation(c, P, pair_geometry(c)));
 }
 
-MinimizeResult minimize(Cluster& c, const MinimizeOptions& options,
-                        LaggedSchurComplement* schur) {
+MinimizeResult minimize(Cluster& c, const MinimizeOptions& options, MinimizeCarry* carry) {
     check(options);
     check_filled_box_targets(c, "minimize");
     if (auto [s, f] = find_degenerate_facet(c, c.positions()); s >= 0)
         throw GeometryError("minimize: " + facet_name(s, f) + " has zero area");
     const std::vector<Vec3> X0 = c.positions();
     try {
-        return Minimizer(c, options, schur).run();
+        return Minimizer(c, options, carry).run();
     } catch (const std::exception&) {
         c.set_positions(X0);
         throw;

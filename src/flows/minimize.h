@@ -50,6 +50,20 @@ struct MinimizeOptions {
     double tau_max = 1e4;
     /// Relative volume error |V_b - V*_b| / V*_b the result must reach to count as converged.
     double volume_tol = 1e-12;
+    /// 0, or stop ("settled") once the energy changed by at most settle |E| over the last
+    /// settle_window accepted steps: how Evolver's users judge a foam whose residual the mesh
+    /// holds up (a sliver among 10^5 facets), where the residual never reaches tol.
+    double settle = 0;
+    int settle_window = 100;
+};
+
+/// What one minimize() hands to the next on the same bodies (minimize_with_transitions'
+/// rounds): the Schur complement that preconditions the constraint solve of a cluster of many
+/// bodies (solvers/schur_complement.h), and the energies after the last accepted steps (for
+/// MinimizeOptions::settle, across the rounds and the transitions between them).
+struct MinimizeCarry {
+    LaggedSchurComplement schur;
+    std::vector<double> energies; ///< the last settle_window + 1 at most, oldest first
 };
 
 struct MinimizeResult {
@@ -62,8 +76,9 @@ struct MinimizeResult {
     double tau = 0;          ///< the tau the next step would have tried, relative to R^2
     double wall_seconds = 0;
     bool converged = false;
-    /// "converged", "max_iterations", "interrupted", "stalled: <why>", or "topology: <what>"
-    /// (a facet angle below 1 degree, or films without bodies shrinking away).
+    /// "converged", "settled: <by how much>", "max_iterations", "interrupted", "stalled: <why>",
+    /// or "topology: <what>" (a facet angle below 1 degree, or films without bodies shrinking
+    /// away).
     std::string stop_reason;
 };
 
@@ -71,10 +86,8 @@ struct MinimizeResult {
 /// on Ctrl-C (core/interrupt.h) between steps with the last accepted state.
 /// \throw InvalidInput for bad options (the cluster unchanged); on any other throw (a wall
 /// function's error, a singular system) the cluster is restored to where it started.
-/// `schur`: the Schur complement of an earlier minimize of the same bodies, kept for the next
-/// one (minimize_with_transitions' rounds), where it preconditions the constraint solve of a
-/// cluster of many bodies (solvers/schur_complement.h); none: a new one for this call.
-MinimizeResult minimize(Cluster& c, const MinimizeOptions& options,
-                        LaggedSchurComplement* schur = nullptr);
+/// `carry`: what an earlier minimize of the same bodies left (MinimizeCarry), updated for the
+/// next; none: a fresh one for this call.
+MinimizeResult minimize(Cluster& c, const MinimizeOptions& options, MinimizeCarry* carry = nullptr);
 
 } // namespace froth

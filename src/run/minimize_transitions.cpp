@@ -146,13 +146,14 @@ TransitionMinimizeResult minimize_with_transitions(Cluster& c,
     JunctionTransitions junctions(o.min_line_fraction, false);
     junctions.remember(c, bodies);
     MinimizeOptions m = o.minimize;
-    // the rounds keep the bodies, so one round's Schur complement preconditions the next's
-    LaggedSchurComplement schur;
+    // the rounds keep the bodies, so one round's Schur complement preconditions the next's,
+    // and the energies of the settle window run on through the transitions
+    MinimizeCarry carry;
     int iterations = 0, rejected = 0;
     double seconds = 0;
     for (;;) {
         m.max_iterations = o.minimize.max_iterations - iterations;
-        MinimizeResult r = minimize(c, m, &schur);
+        MinimizeResult r = minimize(c, m, &carry);
         ++out.rounds;
         iterations += r.iterations, rejected += r.rejected, seconds += r.wall_seconds;
         r.iterations = iterations, r.rejected = rejected, r.wall_seconds = seconds;

@@ -185,4 +185,27 @@ T.assert_near(rw.energy, rp.energy, 1e-14 * rp.energy, "the same energy")
 T.assert_equal(rp.events, nil, "without transitions no events field")
 T.check_error("minimize: option 'min_line_fraction' must lie in (0, 1)", with.minimize, with,
               {transitions = true, min_line_fraction = 2})
+
+-- settle: with a tol no mesh reaches, minimize stops once the energy has stopped falling (by at
+-- most settle |E| over settle_window steps), not at max_iterations; the energy is that of the
+-- converged state, and the next steps lower it by less than the window did.
+local conv = froth.double_bubble{h = 0.3}
+local rconv = conv:minimize{}
+for _, transitions in ipairs{false, true} do
+  local st = froth.double_bubble{h = 0.3}
+  local rst = st:minimize{tol = 1e-300, settle = 1e-11, settle_window = 5, max_iterations = 500,
+                          transitions = transitions}
+  local what = transitions and " (with transitions)" or ""
+  T.assert_true(rst.stop_reason:find("^settled: the energy changed by .* in the last 5 steps$") ~= nil,
+                "settle stops minimize" .. what, rst.stop_reason)
+  T.assert_true(not rst.converged and rst.iterations < 500, "settled is not converged, before max_iterations" .. what,
+                rst.iterations)
+  T.assert_true(T.rel(rst.energy, rconv.energy) <= 1e-9, "settled at the converged energy" .. what,
+                ("%.15g vs %.15g"):format(rst.energy, rconv.energy))
+  local next5 = st:minimize{tol = 1e-300, max_iterations = 5}
+  T.assert_true((rst.energy - next5.energy) / rst.energy <= 1e-11, "five more steps gain less than settle" .. what,
+                tostring(rst.energy - next5.energy))
+end
+T.check_error("minimize: settle must be 0 or positive and finite, got -1", with.minimize, with, {settle = -1})
+T.check_error("minimize: settle_window must be at least 1, got 0", with.minimize, with, {settle_window = 0})
 T.summary()
