@@ -4,17 +4,14 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/interrupt.h"
-#include "io/history.h"
-#include "io/vtk_writer.h"
 #include "mesh/transitions.h"
 #include "run/junction_transitions.h"
+#include "run/run_outputs.h"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
-#include <memory>
 #include <optional>
 
 namespace froth {
@@ -66,21 +63,6 @@ void check_options(const EvolveOptions& o) {
                            "[0, 60) degrees and a step count >= 0");
 }
 
-void write_history(const std::string& stem, const std::vector<HistoryRow>& rows) {
-    write_history_csv(stem + ".csv", rows);
-    write_history_svg(stem + ".svg", rows, "froth: energy over time");
-}
-
-std::vector<PointField> output_fields(const Cluster& c) {
-    return {{"mean_curvature", vertex_mean_curvature(c)}};
-}
-
-void draw_progress(std::FILE* out, const EvolveResult& r, const StepReport& s, double fraction) {
-    std::fprintf(out, "\r  step %6d  t = %-10.5g  energy = %-12.8g  volume loss = %8.2e  %5.1f%%  ",
-                 r.steps, s.t, s.energy, s.volume_loss, 100.0 * fraction);
-    std::fflush(out);
-}
-
 /// The watch of a run: with transitions, lines between quadruple points are left to the T1s.
 WatchOptions watch_options(const EvolveOptions& o) {
     WatchOptions w = o.watch;
@@ -103,21 +85,12 @@ class Run {
   public:
     Run(Cluster& c, TimeStepper& stepper, const EvolveOptions& o, TransitionMemory* memory)
         : c_(c), stepper_(stepper), o_(o), watch_(watch_options(o)),
-          hard_watch_(hard_watch_options(o)), t_start_(c.time()),
-          t_end_(c.time() + o.duration), uncrossed_(c.positions()), uncrossed_t_(c.time()),
+          hard_watch_(hard_watch_options(o)), t_start_(c.time()), t_end_(c.time() + o.duration),
+          uncrossed_(c.positions()), uncrossed_t_(c.time()), outputs_(c, stepper, o, memory),
           memory_(o.transitions ? memory : nullptr) {
         for (int b = 0; b < c.n_bodies(); ++b) original_body_.push_back(b);
         r_.stop_reason = o.steps >= 0 ? "steps done" : "T reached";
-        if (!o.output.empty()) {
-            series_ = std::make_unique<PvdSeries>(o.output);
-            series_->add(c.time(), c, output_fields(c));
-        }
-        if (!o.history.empty()) { // written at once too, so a bad path fails before any step
-            history_.push_back(history_row(make_report(c), 0));
-            write_history(o.history, history_);
-        }
-        if (!o.checkpoint.empty()) save_state(o.checkpoint, c, stepper, memory);
-        write_frame(); // the start, so a bad path fails before any step
+        if (outputs_.keeps_history()) outputs_.start_history(history_row(make_report(c), 0));
         if (!o.transitions) return;
         if (memory_ && memory_->junctions &&
             memory_->junctions->fits(c.n_bodies(), o.watch.min_line_fraction)) {
@@ -158,13 +131,8 @@ class Run {
 
     EvolveResult finish(Clock::time_point start) {
         if (r_.event) r_.stop_reason = "topology: " + r_.event->message;
-        if (!written_last_) write_state_outputs();
-        if (!o_.history.empty()) {
-            while (history_.size() > 1 && history_.back().t > c_.time()) // after a crossing
-                history_.pop_back();
-            write_history(o_.history, history_);
-        }
-        if (o_.progress) std::fprintf(o_.progress, "\r%90s\r", ""), std::fflush(o_.progress);
+        if (!outputs_.written_last()) write_state_outputs();
+        outputs_.finish(c_);
         r_.last = make_report(c_);
         if (memory_) *memory_ = memory_now();
         r_.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -213,7 +181,7 @@ class Run {
     }
 
     Before keep_before() const {
-        return {c_, junctions_, original_body_, r_, history_.size(), uncrossed_, uncrossed_t_};
+        return {c_, junctions_, original_body_, r_, outputs_.rows(), uncrossed_, uncrossed_t_};
     }
 
     /// Returns the run to `b` with the next tau a quarter of the last (true), unless tau is
@@ -286,7 +254,7 @@ class Run {
         junctions_ = std::move(b.junctions);
         original_body_ = std::move(b.original_body);
         r_ = std::move(b.r);
-        history_.resize(b.history_rows);
+        outputs_.rewind(b.history_rows);
         uncrossed_ = std::move(b.uncrossed), uncrossed_t_ = b.uncrossed_t;
         stepper_.reset();
     }
@@ -372,8 +340,8 @@ class Run {
         r_.factorizations += s.refactorized;
         r_.max_energy_increase =
             std::max(r_.max_energy_increase, (s.energy - s.energy_before) / s.energy_before);
-        written_last_ = false;
-        if (!o_.history.empty()) history_.push_back(history_row(s, s.tau));
+        outputs_.state_changed();
+        outputs_.add_row(history_row(s, s.tau));
     }
 
     /// A history row with the volumes in the columns of the bodies at the start of the run
@@ -682,8 +650,8 @@ class Run {
         c_ = std::move(changed);
         stepper_.reset();
         uncrossed_ = c_.positions(), uncrossed_t_ = c_.time();
-        if (!o_.history.empty() && history_row_after)
-            history_.push_back(history_row(make_report(c_), 0));
+        if (outputs_.keeps_history() && history_row_after)
+            outputs_.add_row(history_row(make_report(c_), 0));
     }
 
     /// Pops the vanishing body of event e; one with more than four neighbours, or whose pop
@@ -731,31 +699,15 @@ class Run {
     }
 
     void write_output(const StepReport& s) {
-        if (o_.every > 0 && r_.steps % o_.every == 0) write_state_outputs();
-        if (o_.progress && std::chrono::duration<double>(Clock::now() - last_draw_).count() > 0.25) {
-            draw_progress(o_.progress, r_, s, progress());
-            last_draw_ = Clock::now();
-        }
+        if (outputs_.state_due(r_.steps)) write_state_outputs();
+        outputs_.draw_progress(r_, s, progress());
     }
 
-    /// What is written every `every` steps and of the last state: the ParaView snapshot, the
-    /// checkpoint and the picture, each if asked for.
+    /// The state outputs, the checkpoint with the memory the next call would start from.
     void write_state_outputs() {
-        if (series_) series_->add(c_.time(), c_, output_fields(c_));
-        if (!o_.checkpoint.empty()) {
-            const TransitionMemory memory = memory_now();
-            save_state(o_.checkpoint, c_, stepper_, o_.transitions ? &memory : nullptr);
-        }
-        write_frame();
-        written_last_ = true;
-    }
-
-    /// The next picture of the snapshots series (none without `snapshots`).
-    void write_frame() {
-        if (o_.snapshots.empty()) return;
-        char number[16];
-        std::snprintf(number, sizeof number, "_%06d.png", frames_++);
-        write_snapshot(c_, o_.snapshots + number, o_.snapshot);
+        std::optional<TransitionMemory> memory;
+        if (o_.transitions && !o_.checkpoint.empty()) memory = memory_now();
+        outputs_.write_state(c_, stepper_, memory ? &*memory : nullptr);
     }
 
     Cluster& c_;
@@ -766,10 +718,9 @@ class Run {
     // adaptive: the next step to try (the first: tau_start, at most tau_max)
     double tau_next_ = o_.tau_max > 0 ? std::min(o_.tau, o_.tau_max) : o_.tau;
     EvolveResult r_;
-    std::unique_ptr<PvdSeries> series_;
-    std::vector<HistoryRow> history_;
     std::vector<Vec3> uncrossed_; // the last state that passed the crossing test
     double uncrossed_t_;
+    RunOutputs outputs_;
     const int n_start_bodies_ = c_.n_bodies();
     std::vector<int> original_body_; // the bodies' ids at the start of the run
     JunctionTransitions junctions_{o_.watch.min_line_fraction};
@@ -788,9 +739,6 @@ class Run {
     static constexpr int kPassesAtOneDefect = 2;
     bool caps_relaxed_ = false; // relax_caps_once made its move in this step's look
     std::string unresolved_refused_; // why a cell below the mesh's resolution could not go
-    bool written_last_ = true; // the state outputs hold the current state
-    int frames_ = 0;
-    Clock::time_point last_draw_ = Clock::now();
 };
 
 } // namespace
