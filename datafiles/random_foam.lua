@@ -6,15 +6,18 @@
 -- before and after; writes out/random_foam.vtu (the cells unwrapped). minimize stops where a
 -- short triple line collapses ("topology: ..."), the cost fallen from 5.384 to 5.365 at the
 -- defaults (docs/benchmarks.md, "Foams"); with transitions=1 it makes the T1s and inverse T1s
--- there and goes on for some rounds (docs/lua_api.md, c:minimize).
+-- there and goes on for some rounds (docs/lua_api.md, c:minimize); hessian=1 adds Newton's steps
+-- near the equilibrium (the 64 cells with transitions then converge), settle=1e-7 ends a run
+-- whose energy has stopped moving.
 --
 -- Sample runs:  froth datafiles/random_foam.lua                 (64 cells, 50 Lloyd steps: 5 s)
 --               froth datafiles/random_foam.lua n=16 lloyd=0 mesher=fan
 --               froth datafiles/random_foam.lua lloyd=20 transitions=1
+--               froth datafiles/random_foam.lua transitions=1 hessian=1 max_iterations=3000
 --               FROTH_SMOKE=1 froth datafiles/random_foam.lua  (ctest: 16 cells, 5 iterations)
 local script = require("froth.script")
 local opts = script.options({n = 64, seed = 1, lloyd = 50, h = 0.4, mesher = "", max_iterations = 1000,
-                             transitions = 0, settle = 0, output = "out"}, arg)
+                             transitions = 0, settle = 0, hessian = 0, output = "out"}, arg)
 if opts.smoke then opts.n, opts.max_iterations = 16, 5 end
 local mesher = opts.mesher ~= "" and opts.mesher or nil
 
@@ -25,9 +28,9 @@ print(("%d cells (seed %d, %d Lloyd steps): %d films, %d triple lines, %d quadru
       :format(n, opts.seed, opts.lloyd, info.surfaces, #c:triple_lines(), #c:quadruple_points(), info.vertices))
 print(("flat cells: cost %.5f"):format(2 * c:energy() / n))
 local r = c:minimize{max_iterations = opts.max_iterations, transitions = opts.transitions ~= 0,
-                     settle = opts.settle}
-print(("minimize: %d iterations in %.2f s, residual %.3g, volume error %.2g"):format(r.iterations, r.wall_s,
-      r.residual, r.volume_error))
+                     settle = opts.settle, hessian = opts.hessian ~= 0}
+print(("minimize: %d iterations (%d Newton) in %.2f s, residual %.3g, volume error %.2g"):format(r.iterations,
+      r.hessian_steps, r.wall_s, r.residual, r.volume_error))
 if r.events then
   local counts, kinds = {}, {}
   for _, e in ipairs(r.events) do counts[e.kind] = (counts[e.kind] or 0) + 1 end

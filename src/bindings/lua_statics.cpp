@@ -28,6 +28,7 @@ void push_minimize_result(lua_State* L, const MinimizeResult& r,
     set_number(L, "volume_error", r.volume_error);
     set_integer(L, "iterations", r.iterations);
     set_integer(L, "rejected", r.rejected);
+    set_integer(L, "hessian_steps", r.hessian_steps);
     set_number(L, "wall_s", r.wall_seconds);
     lua_pushboolean(L, r.converged);
     lua_setfield(L, -2, "converged");
@@ -44,7 +45,7 @@ void push_minimize_result(lua_State* L, const MinimizeResult& r,
 }
 
 /// c:minimize{tol, max_iterations, tau_start, tau_growth, tau_max, volume_tol, settle,
-/// settle_window, transitions, min_line_fraction}
+/// settle_window, hessian, hessian_below, transitions, min_line_fraction}
 int l_minimize(lua_State* L) {
     ClusterHandle& h = self(L);
     ChangeGuard change(L, h, "minimize");
@@ -59,6 +60,8 @@ int l_minimize(lua_State* L) {
     m.volume_tol = o.number("volume_tol", m.volume_tol);
     m.settle = o.number("settle", m.settle);
     m.settle_window = static_cast<int>(o.integer("settle_window", m.settle_window));
+    m.hessian = o.boolean("hessian", m.hessian);
+    m.hessian_below = o.number("hessian_below", m.hessian_below);
     const bool transitions = o.boolean("transitions", false);
     t.min_line_fraction = o.number("min_line_fraction", t.min_line_fraction);
     if (!(t.min_line_fraction > 0 && t.min_line_fraction < 1))

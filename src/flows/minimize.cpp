@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "core/format.h"
 #include "core/interrupt.h"
+#include "flows/hessian_step.h"
 #include "schemes/mean_curvature.h"
 #include "solvers/anderson.h"
 #include "solvers/schur_complement.h"
@@ -42,17 +43,9 @@ struct Variation {
 void project_normal(const Cluster& c, const PositionBasis& P, const PairGeometry& g,
                     Eigen::VectorXd& y) {
     for (int v = 0; v < c.n_vertices(); ++v) {
-        const int n = P.dim(v), pairs = c.pair_begin(v + 1) - c.pair_begin(v);
-        if (n == 0) continue; // a fixed vertex
-        Eigen::MatrixXd N(n, pairs);
-        for (int k = 0; k < pairs; ++k)
-            N.col(k) = P.T(v).leftCols(n).transpose() * g.omega[c.pair_begin(v) + k];
-        Eigen::JacobiSVD<Eigen::MatrixXd> svd(N, Eigen::ComputeThinU);
-        const auto& s = svd.singularValues();
-        int rank = 0;
-        while (rank < s.size() && s[rank] > 1e-8 * s[0]) ++rank;
-        const Eigen::MatrixXd Q = svd.matrixU().leftCols(rank);
-        auto seg = y.segment(P.offset(v), n);
+        if (P.dim(v) == 0) continue; // a fixed vertex
+        const Eigen::MatrixXd Q = normal_basis(c, P, g, v);
+        auto seg = y.segment(P.offset(v), P.dim(v));
         seg = Q * (Q.transpose() * seg);
     }
 }
@@ -125,6 +118,9 @@ void check(const MinimizeOptions& o) {
     if (!(std::isfinite(o.settle) && o.settle >= 0))
         throw InvalidInput("minimize: settle must be 0 or positive and finite, got " +
                            fmt(o.settle));
+    if (!(std::isfinite(o.hessian_below) && o.hessian_below > 0))
+        throw InvalidInput("minimize: hessian_below must be positive and finite, got " +
+                           fmt(o.hessian_below));
     if (o.settle_window < 1)
         throw InvalidInput("minimize: settle_window must be at least 1, got " +
                            std::to_string(o.settle_window));
@@ -204,6 +200,7 @@ class Minimizer {
   public:
     Minimizer(Cluster& c, const MinimizeOptions& o, MinimizeCarry* carry)
         : c_(c), o_(o), system_(c), carry_(carry ? *carry : own_carry_) {
+        hessian_ = o.hessian && !c.anisotropic() && !c.has_walls();
         double area = 0;
         for (double a : surface_areas(c)) area += a;
         R2_ = area / (4 * M_PI);
@@ -244,8 +241,10 @@ class Minimizer {
                                 " R^2 lowers the energy (residual " + fmt(r.residual) + ")";
                 break;
             }
-            if (try_step(P, g, d, V)) {
+            const bool newton = try_hessian_step(P, g, d, V, s);
+            if (newton || try_step(P, g, d, V)) {
                 ++r.iterations, rejects_in_row = 0;
+                r.hessian_steps += newton;
                 tau_ = std::min(tau_ * o_.tau_growth, o_.tau_max * R2_);
                 double area = 0;
                 for (double a : surface_areas(c_)) area += a;
@@ -296,6 +295,47 @@ class Minimizer {
         r.stop_reason = "settled: the energy changed by " + fmt(-drop) + " of itself in the last " +
                         std::to_string(o_.settle_window) + " steps";
         return true;
+    }
+
+    /// Newton's step (hessian_step.h) where MinimizeOptions::hessian asks for it and the
+    /// residual is below hessian_below: tried with mu_, ten times larger after each failure
+    /// (the merit rises, a facet angle halves, the system is singular) up to kHessianTries
+    /// times; then none for kHessianPause iterations. False: the cluster unchanged.
+    bool try_hessian_step(const PositionBasis& P, const PairGeometry& g, const Variation& d,
+                          const std::vector<double>& V, const EquilibriumState& s) {
+        if (!hessian_ || s.residual > o_.hessian_below) return false;
+        if (hessian_pause_ > 0) return --hessian_pause_, false;
+        const int nc = c_.n_volume_constraints();
+        Eigen::VectorXd dV(nc);
+        for (int b = 0; b < nc; ++b)
+            dV[b] = c_.target_volumes()[b] - V[b];
+        const std::vector<double> p(s.pressures.begin(), s.pressures.begin() + nc);
+        for (int k = 0; k < kHessianTries; ++k, mu_ *= 10) {
+            HessianStep step;
+            try {
+                step = hessian_step(c_, P, g, p, dV, mu_);
+            } catch (const SolverError&) {
+                continue;
+            }
+            restore_volumes(P, d, step.X);
+            const auto merit = [&](const std::vector<Vec3>& Y) {
+                const std::vector<double> W = body_volumes(c_, Y);
+                double m = energy_at(Y);
+                for (int b = 0; b < nc; ++b)
+                    m -= step.pressures[b] * (W[b] - c_.target_volumes()[b]);
+                return m;
+            };
+            const double bound = merit(c_.positions()) + 1e-12 * std::abs(d.energy);
+            if (acceptable(step.X, merit, bound) &&
+                min_facet_angle(step.X) >= kAngleKept * min_facet_angle(c_.positions())) {
+                c_.set_positions(std::move(step.X));
+                mu_ = std::max(mu_ / 10, kMinMu);
+                anderson_.reset();
+                return true;
+            }
+        }
+        hessian_pause_ = kHessianPause;
+        return false;
     }
 
     /// One step at the current tau (accelerated at the largest tau); false (cluster unchanged)
@@ -433,6 +473,11 @@ class Minimizer {
     /// Below this smallest facet angle (degrees) minimize stops: the mesh is collapsing.
     static constexpr double kDegenerateAngle = 1.0;
     static constexpr int kAngleRetries = 3;
+    static constexpr int kHessianTries = 4, kHessianPause = 10;
+    static constexpr double kMinMu = 1e-6; ///< relative to sigma_mean / R^2 (hessian_step.h)
+    bool hessian_ = false;
+    double mu_ = 1e-3;
+    int hessian_pause_ = 0;
     double initial_area_ = 0;
     int steps_on_factor_ = 0;
     int angle_retries_ = 0; // steps in a row refused for collapsing a facet

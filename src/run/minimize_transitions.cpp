@@ -149,14 +149,16 @@ TransitionMinimizeResult minimize_with_transitions(Cluster& c,
     // the rounds keep the bodies, so one round's Schur complement preconditions the next's,
     // and the energies of the settle window run on through the transitions
     MinimizeCarry carry;
-    int iterations = 0, rejected = 0;
+    int iterations = 0, rejected = 0, hessian_steps = 0;
     double seconds = 0;
     for (;;) {
         m.max_iterations = o.minimize.max_iterations - iterations;
         MinimizeResult r = minimize(c, m, &carry);
         ++out.rounds;
         iterations += r.iterations, rejected += r.rejected, seconds += r.wall_seconds;
+        hessian_steps += r.hessian_steps;
         r.iterations = iterations, r.rejected = rejected, r.wall_seconds = seconds;
+        r.hessian_steps = hessian_steps;
         out.result = std::move(r);
         if (!stopped_on_a_facet(out.result) || out.rounds >= o.max_rounds ||
             iterations >= o.minimize.max_iterations)

@@ -206,6 +206,28 @@ for _, transitions in ipairs{false, true} do
   T.assert_true((rst.energy - next5.energy) / rst.energy <= 1e-11, "five more steps gain less than settle" .. what,
                 tostring(rst.energy - next5.energy))
 end
+-- hessian: Newton's steps near the equilibrium reach the same double bubble (the area within
+-- 1e-5: the normal steps keep the mesh's tangential layout) in fewer steps; an anisotropic
+-- cluster takes none and minimises as without.
+local hb = froth.double_bubble{h = 0.2}
+local rh = hb:minimize{hessian = true}
+local pb = froth.double_bubble{h = 0.2}
+local rpb = pb:minimize{}
+T.assert_true(rh.converged and rh.hessian_steps > 0 and rh.iterations < rpb.iterations,
+              "hessian: converged, with Newton's steps, in fewer steps",
+              rh.iterations .. " (" .. rh.hessian_steps .. ") vs " .. rpb.iterations)
+T.assert_true(T.rel(rh.energy, rpb.energy) <= 1e-5, "hessian: the same area within 1e-5",
+              ("%.10f vs %.10f"):format(rh.energy, rpb.energy))
+T.assert_true(rh.volume_error <= 1e-12 and T.rel(rh.pressures[1], rpb.pressures[1]) <= 1e-4,
+              "hessian: volumes exact, the same pressures", tostring(rh.pressures[1]))
+local ab, ab2 = froth.double_bubble{h = 0.3}, froth.double_bubble{h = 0.3}
+for _, x in ipairs{ab, ab2} do x:set_anisotropy("all", froth.anisotropies.ellipsoidal{1, 1, 1.44}) end
+local ra, ra2 = ab:minimize{hessian = true, max_iterations = 30}, ab2:minimize{max_iterations = 30}
+T.assert_equal(ra.hessian_steps, 0, "hessian: none for an anisotropic cluster")
+T.assert_near(ra.energy, ra2.energy, 0, "hessian: an anisotropic cluster minimises as without")
 T.check_error("minimize: settle must be 0 or positive and finite, got -1", with.minimize, with, {settle = -1})
+T.check_error("minimize: hessian_below must be positive and finite, got 0", with.minimize, with,
+              {hessian = true, hessian_below = 0})
+T.check_error("minimize: option 'hessian' must be true or false", with.minimize, with, {hessian = 1})
 T.check_error("minimize: settle_window must be at least 1, got 0", with.minimize, with, {settle_window = 0})
 T.summary()
