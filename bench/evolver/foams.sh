@@ -1,7 +1,8 @@
 #!/bin/sh
 # Kelvin and Weaire-Phelan: Surface Evolver's shipped twointor.fe and phelanc.fe against
 # froth.kelvin_foam and froth.weaire_phelan_foam (docs/benchmarks.md "Foams"). From the
-# repository root:  sh bench/evolver/foams.sh [path/to/froth]   (about 6 minutes)
+# repository root:  sh bench/evolver/foams.sh [path/to/froth]   (about 7 minutes)
+# froth runs twice: the plain steps, then with Newton's steps (c:minimize{hessian = true}).
 set -e
 FROTH=${1:-build/froth}
 DIR=$(dirname "$0")
@@ -15,3 +16,4 @@ evolver -x -f "$TMP/kelvin.cmd" "$EX/twointor.fe" | grep '^EVFOAM' | sed 's/^/ke
 sed "s/NCELLS/8/g; s/BOXVOLUME/8/g" "$DIR/foams.cmd" > "$TMP/wp.cmd"
 evolver -x -f "$TMP/wp.cmd" "$EX/phelanc.fe" | grep '^EVFOAM' | sed 's/^/weaire_phelan /'
 "$FROTH" "$DIR/../bench_foams.lua" h=0.3,0.15,0.08,0.04
+"$FROTH" "$DIR/../bench_foams.lua" h=0.3,0.15,0.08,0.04 hessian=1
