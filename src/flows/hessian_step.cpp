@@ -74,10 +74,13 @@ HessianStep hessian_step(const Cluster& c, const PositionBasis& P, const PairGeo
     for (double a : surface_areas(c))
         total_area += a;
     const double sigma_mean = energy(c) / total_area, R2 = total_area / (4 * M_PI);
-    SparseMatrix K = Nt * lagrangian_hessian(c, pressures) * u.N;
-    for (Eigen::Index k = 0; k < K.cols(); ++k)
-        K.coeffRef(k, k) += mu * sigma_mean / R2 * u.mass[k];
-    K.makeCompressed();
+    // mu M as a sparse diagonal: coeffRef would insert where N^T H N has no diagonal entry
+    std::vector<Eigen::Triplet<double>> damping;
+    for (Eigen::Index k = 0; k < u.mass.size(); ++k)
+        damping.emplace_back(k, k, mu * sigma_mean / R2 * u.mass[k]);
+    SparseMatrix D(u.mass.size(), u.mass.size());
+    D.setFromTriplets(damping.begin(), damping.end());
+    const SparseMatrix K = Nt * lagrangian_hessian(c, pressures) * u.N + D;
     SparseDirectSolver lu(Factorization::LU);
     bool fresh = true;
     const auto solve = [&](const Eigen::MatrixXd& B) {

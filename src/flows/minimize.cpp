@@ -319,11 +319,7 @@ class Minimizer {
             }
             restore_volumes(P, d, step.X);
             const auto merit = [&](const std::vector<Vec3>& Y) {
-                const std::vector<double> W = body_volumes(c_, Y);
-                double m = energy_at(Y);
-                for (int b = 0; b < nc; ++b)
-                    m -= step.pressures[b] * (W[b] - c_.target_volumes()[b]);
-                return m;
+                return lagrangian(Y, step.pressures);
             };
             const double bound = merit(c_.positions()) + 1e-12 * std::abs(d.energy);
             if (acceptable(step.X, merit, bound) &&
@@ -370,15 +366,7 @@ class Minimizer {
         std::vector<Vec3> X = c_.positions();
         for (int v = 0; v < c_.n_vertices(); ++v) X[v] += P.displacement(y, v);
         if (!all_walls_flat_) project_onto_walls_of(c_, X);
-        // The merit is the Lagrangian E - p . (V - V*) with the step's multipliers: the energy
-        // at fixed volumes to first order, so a step that corrects the volumes is not mistaken
-        // for one that raises the energy.
-        const auto merit = [&](const std::vector<Vec3>& Y) {
-            const std::vector<double> W = body_volumes(c_, Y);
-            double m = energy_at(Y);
-            for (int b = 0; b < p.size(); ++b) m -= p[b] * (W[b] - c_.target_volumes()[b]);
-            return m;
-        };
+        const auto merit = [&](const std::vector<Vec3>& Y) { return lagrangian(Y, p); };
         const double bound = merit(c_.positions()) + 1e-12 * std::abs(d.energy);
         if (limit) {
             const Eigen::VectorXd x = flatten(c_.positions());
@@ -456,6 +444,17 @@ class Minimizer {
                         best_cot = cot, sine = sn, cosine = cs;
                 }
         return std::atan2(sine, cosine) * 180 / M_PI;
+    }
+
+    /// The merit of a step: the Lagrangian E - p . (V - V*) at X with the step's multipliers
+    /// p, the energy at fixed volumes to first order, so that a step that corrects the volumes
+    /// is not mistaken for one that raises the energy.
+    double lagrangian(const std::vector<Vec3>& X, const Eigen::VectorXd& p) const {
+        const std::vector<double> W = body_volumes(c_, X);
+        double m = energy_at(X);
+        for (int b = 0; b < p.size(); ++b)
+            m -= p[b] * (W[b] - c_.target_volumes()[b]);
+        return m;
     }
 
     double energy_at(const std::vector<Vec3>& X) const {
