@@ -62,8 +62,8 @@ NormalUnknowns normal_unknowns(const Cluster& c, const PositionBasis& P, const P
 } // namespace
 
 HessianStep hessian_step(const Cluster& c, const PositionBasis& P, const PairGeometry& g,
-                         const std::vector<double>& pressures, const Eigen::VectorXd& dV,
-                         double mu) {
+                         const std::vector<double>& pressures, const Eigen::VectorXd& dV, double mu,
+                         LaggedSchurComplement& schur) {
     const std::vector<Vec3>& X = c.positions();
     const NormalUnknowns u = normal_unknowns(c, P, g);
     const SparseMatrix Nt = u.N.transpose();
@@ -89,7 +89,7 @@ HessianStep hessian_step(const Cluster& c, const PositionBasis& P, const PairGeo
         return Y;
     };
     HessianStep step;
-    const Eigen::VectorXd z = schur_complement_solve(solve, G, f, dV, step.pressures);
+    const Eigen::VectorXd z = schur.solve(solve, G, f, dV, step.pressures);
     const Eigen::VectorXd dX = u.N * z;
     step.X = X;
     for (int v = 0; v < c.n_vertices(); ++v)

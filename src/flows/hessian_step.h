@@ -18,13 +18,16 @@
 ///   [ G^T N            0     ] [ -p ] = [  V* - V     ]
 ///
 /// solved by the Schur complement with an LU of the first block (it need not be definite:
-/// -p d^2 V makes a bubble's constant mode negative, which the volume constraint removes).
+/// -p d^2 V makes a bubble's constant mode negative, which the volume constraint removes);
+/// with many bodies the Schur complement of an earlier step preconditions GMRES on the new
+/// one (LaggedSchurComplement, indefinite), as the plain steps' CG.
 /// mu > 0 damps it towards a gradient step (Levenberg-Marquardt), and makes the first block
 /// regular where translations leave N^T H N nearly singular.
 
 #include "assembly/position_basis.h"
 #include "geometry/geometry.h"
 #include "mesh/cluster.h"
+#include "solvers/schur_complement.h"
 
 #include <Eigen/Core>
 
@@ -44,10 +47,11 @@ struct HessianStep {
 
 /// The step above from c's positions, with the Hessian at `pressures` (one per volume
 /// constraint) and damping mu relative to sigma_mean / R^2 (R^2 = area / 4 pi).
-/// Isotropic clusters without walls only (the caller checks).
+/// Isotropic clusters without walls only (the caller checks). `schur`: made with
+/// definite = false, kept from step to step.
 /// \throw SolverError if the system is singular.
 HessianStep hessian_step(const Cluster& c, const PositionBasis& P, const PairGeometry& g,
-                         const std::vector<double>& pressures, const Eigen::VectorXd& dV,
-                         double mu);
+                         const std::vector<double>& pressures, const Eigen::VectorXd& dV, double mu,
+                         LaggedSchurComplement& schur);
 
 } // namespace froth

@@ -300,12 +300,16 @@ class Minimizer {
     /// Newton's step (hessian_step.h) where MinimizeOptions::hessian asks for it and the
     /// residual is below hessian_below: tried with mu_, ten times larger after each failure
     /// (the merit rises, a facet angle halves, the system is singular) up to kHessianTries
-    /// times; then none for kHessianPause iterations. False: the cluster unchanged.
+    /// times; then none for 10, 20, 40, ... iterations. False: the cluster unchanged.
     bool try_hessian_step(const PositionBasis& P, const PairGeometry& g, const Variation& d,
                           const std::vector<double>& V, const EquilibriumState& s) {
         if (!hessian_ || s.residual > o_.hessian_below) return false;
         if (hessian_pause_ > 0) return --hessian_pause_, false;
         const int nc = c_.n_volume_constraints();
+        // with many bodies the first Newton step waits for a plain one, whose S it borrows
+        if (nc >= LaggedSchurComplement::kMinColumns && !carry_.newton_schur.has_lagged() &&
+            !carry_.schur.has_lagged())
+            return false;
         Eigen::VectorXd dV(nc);
         for (int b = 0; b < nc; ++b)
             dV[b] = c_.target_volumes()[b] - V[b];
@@ -313,7 +317,8 @@ class Minimizer {
         for (int k = 0; k < kHessianTries; ++k, mu_ *= 10) {
             HessianStep step;
             try {
-                step = hessian_step(c_, P, g, p, dV, mu_);
+                carry_.newton_schur.borrow(carry_.schur);
+                step = hessian_step(c_, P, g, p, dV, mu_, carry_.newton_schur);
             } catch (const SolverError&) {
                 continue;
             }
@@ -330,7 +335,11 @@ class Minimizer {
                 return true;
             }
         }
-        hessian_pause_ = kHessianPause;
+        // a mesh whose second variation misleads Newton (slivers, junctions tangled below the
+        // mesh's scale) fails again: each failure doubles the pause (the 1000-cell foam's four
+        // tries, each with a fresh Schur complement, cost 7 minutes)
+        hessian_pause_ = next_pause_;
+        next_pause_ *= 2;
         return false;
     }
 
@@ -472,11 +481,11 @@ class Minimizer {
     /// Below this smallest facet angle (degrees) minimize stops: the mesh is collapsing.
     static constexpr double kDegenerateAngle = 1.0;
     static constexpr int kAngleRetries = 3;
-    static constexpr int kHessianTries = 4, kHessianPause = 10;
+    static constexpr int kHessianTries = 4;
     static constexpr double kMinMu = 1e-6; ///< relative to sigma_mean / R^2 (hessian_step.h)
     bool hessian_ = false;
     double mu_ = 1e-3;
-    int hessian_pause_ = 0;
+    int hessian_pause_ = 0, next_pause_ = 10;
     double initial_area_ = 0;
     int steps_on_factor_ = 0;
     int angle_retries_ = 0; // steps in a row refused for collapsing a facet

@@ -67,11 +67,13 @@ struct MinimizeOptions {
 };
 
 /// What one minimize() hands to the next on the same bodies (minimize_with_transitions'
-/// rounds): the Schur complement that preconditions the constraint solve of a cluster of many
-/// bodies (solvers/schur_complement.h), and the energies after the last accepted steps (for
-/// MinimizeOptions::settle, across the rounds and the transitions between them).
+/// rounds): the Schur complements that precondition the constraint solves of a cluster of many
+/// bodies (solvers/schur_complement.h), the plain steps' and Newton's, and the energies after the
+/// last accepted steps (for MinimizeOptions::settle, across the rounds and the transitions between
+/// them).
 struct MinimizeCarry {
     LaggedSchurComplement schur;
+    LaggedSchurComplement newton_schur{false}; ///< Newton's steps' (indefinite)
     std::vector<double> energies; ///< the last settle_window + 1 at most, oldest first
 };
 

@@ -14,6 +14,8 @@
 /// B has full column rank), one solve with K per iteration; only when that does not converge
 /// within max_iterations(m) does it make S afresh.
 
+#include "solvers/gmres.h"
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -49,6 +51,10 @@ Eigen::VectorXd schur_complement_solve(Solve&& solve, const Eigen::SparseMatrix<
 
 class LaggedSchurComplement {
   public:
+    /// `definite`: S is SPD (K is), and the iteration is CG; else (Newton's steps of minimize,
+    /// whose K is indefinite) GMRES with the same preconditioner.
+    explicit LaggedSchurComplement(bool definite = true) : definite_(definite) {}
+
     /// Below this many constraints S is made afresh every time: its columns are one or two
     /// blocks of a multiple right-hand-side solve, as cheap as a few iterations.
     static constexpr Eigen::Index kMinColumns = 128;
@@ -64,6 +70,9 @@ class LaggedSchurComplement {
     }
     /// The CG stops at this residual relative to g - B^T u: the direct solve's accuracy.
     static constexpr double kTolerance = 1e-13;
+    /// GMRES (indefinite K: Newton's steps, whose LU solves are less accurate and whose
+    /// result is only a proposal that the merit test decides on) stops at this one.
+    static constexpr double kNewtonTolerance = 1e-10;
 
     /// As schur_complement_solve.
     template <class Solve>
@@ -76,7 +85,10 @@ class LaggedSchurComplement {
             return u;
         }
         const Eigen::VectorXd r0 = g - B.transpose() * u;
-        if (!(m >= kMinColumns && lagged_.rows() == m && conjugate_gradients(solve, B, r0, p))) {
+        const auto iterate = [&] {
+            return definite_ ? conjugate_gradients(solve, B, r0, p) : gmres(solve, B, r0, p);
+        };
+        if (!(m >= kMinColumns && lagged_.rows() == m && iterate())) {
             ++fresh_;
             lagged_ = schur_complement_matrix(solve, B).partialPivLu();
             p = lagged_.solve(r0);
@@ -85,6 +97,13 @@ class LaggedSchurComplement {
     }
 
     void reset() { lagged_ = Eigen::PartialPivLU<Eigen::MatrixXd>(); }
+    /// Until it makes its own, the preconditioner is `other`'s lagged S (of the same
+    /// constraints): Newton's steps of minimize start from the plain steps' S, which spares
+    /// them the n_bodies solves of a first S of their own.
+    void borrow(const LaggedSchurComplement& other) {
+        if (!has_lagged()) lagged_ = other.lagged_;
+    }
+    bool has_lagged() const { return lagged_.rows() > 0; }
     int fresh_matrices() const { return fresh_; }  ///< times S was made
     int iterations() const { return iterations_; } ///< CG iterations in all
 
@@ -115,7 +134,25 @@ class LaggedSchurComplement {
         return false;
     }
 
+    /// S p = r0 by GMRES preconditioned with the lagged S; false if it did not converge.
+    template <class Solve>
+    bool gmres(Solve& solve, const Eigen::SparseMatrix<double>& B, const Eigen::VectorXd& r0,
+               Eigen::VectorXd& p) {
+        p = Eigen::VectorXd::Zero(r0.size());
+        const auto apply_S = [&](const Eigen::VectorXd& d) -> Eigen::VectorXd {
+            return B.transpose() * solve(Eigen::MatrixXd(B * d)).col(0);
+        };
+        const auto apply_P = [&](const Eigen::VectorXd& r) -> Eigen::VectorXd {
+            return lagged_.solve(r);
+        };
+        const int it = detail::gmres(apply_S, apply_P, r0, p, kNewtonTolerance * r0.norm(),
+                                     max_iterations(r0.size()));
+        if (it > 0) iterations_ += it;
+        return it >= 0;
+    }
+
     Eigen::PartialPivLU<Eigen::MatrixXd> lagged_;
+    bool definite_ = true;
     int fresh_ = 0, iterations_ = 0;
 };
 
