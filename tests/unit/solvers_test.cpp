@@ -266,5 +266,35 @@ TEST(Solvers, LaggedSchurComplementMatchesTheDirectSolveAndMakesSOnce) {
     }
 }
 
+// Indefinite K (Newton's steps of minimize): the lagged S preconditions GMRES instead of CG,
+// made once for nearby systems, and the solves match the direct Schur complement.
+TEST(Solvers, IndefiniteLaggedSchurComplementIteratesWithGmres) {
+    const int n = 1200, m = 130;
+    const SparseMatrix K = shifted_laplacian(n, -0.3, 0.02); // eigenvalues of both signs
+    const Eigen::VectorXd f = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+    LaggedSchurComplement lagged(false);
+    for (int step = 0; step < 3; ++step) {
+        std::vector<Eigen::Triplet<double>> t;
+        for (int j = 0; j < m; ++j)
+            for (int i = 9 * j; i < 9 * j + 12 && i < n; ++i)
+                t.emplace_back(i, j, std::cos(i + 3.0 * j + 0.01 * step));
+        Eigen::SparseMatrix<double> B(n, m);
+        B.setFromTriplets(t.begin(), t.end());
+        const Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(m, 0.5 + step, -0.5);
+        SparseDirectSolver solver(Factorization::LU);
+        auto solve = [&, first = true](const Eigen::MatrixXd& R) mutable {
+            const bool fresh = std::exchange(first, false);
+            return fresh ? solver.solve_fresh(K, R) : solver.solve_with_last_factor(R);
+        };
+        Eigen::VectorXd p, p_direct;
+        const Eigen::VectorXd y = lagged.solve(solve, B, f, g, p);
+        const Eigen::VectorXd y_direct = schur_complement_solve(solve, B, f, g, p_direct);
+        EXPECT_LT((y - y_direct).norm(), 1e-7 * y_direct.norm()) << "step " << step;
+        EXPECT_LT((p - p_direct).norm(), 1e-7 * p_direct.norm()) << "step " << step;
+    }
+    EXPECT_EQ(lagged.fresh_matrices(), 1);
+    EXPECT_GT(lagged.iterations(), 0);
+}
+
 } // namespace
 } // namespace froth
