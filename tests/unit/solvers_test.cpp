@@ -231,36 +231,49 @@ TEST(Solvers, SchurComplementInBlocksMatchesTheDenseSaddlePoint) {
 // The lagged Schur complement (schur_complement.h) gives the direct solve's y and p on a
 // sequence of nearby systems (the constraint columns moving a little, as a minimize iterate's
 // volume gradients do) while it makes S only once; with few constraints it makes S every time.
-TEST(Solvers, LaggedSchurComplementMatchesTheDirectSolveAndMakesSOnce) {
-    const int n = 1200;
-    const SparseMatrix K = shifted_laplacian(n, 0.05, 0.02);
-    const auto columns = [&](int m, double shift) {
-        std::vector<Eigen::Triplet<double>> t; // overlapping columns, like neighbouring cells
-        for (int j = 0; j < m; ++j)
-            for (int i = 9 * j; i < 9 * j + 12 && i < n; ++i)
-                t.emplace_back(i, j, std::cos(i + 3.0 * j + shift) + 0.1 * shift);
-        Eigen::SparseMatrix<double> B(n, m);
-        B.setFromTriplets(t.begin(), t.end());
-        return B;
+/// m overlapping columns of n rows, like the volume gradients of neighbouring cells.
+Eigen::SparseMatrix<double> overlapping_columns(int n, int m, double shift) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int j = 0; j < m; ++j)
+        for (int i = 9 * j; i < 9 * j + 12 && i < n; ++i)
+            t.emplace_back(i, j, std::cos(i + 3.0 * j + shift) + 0.1 * shift);
+    Eigen::SparseMatrix<double> B(n, m);
+    B.setFromTriplets(t.begin(), t.end());
+    return B;
+}
+
+/// K^-1 R with one factorisation of K, made at the first call.
+auto factor_once(SparseDirectSolver& solver, const SparseMatrix& K) {
+    return [&solver, &K, first = true](const Eigen::MatrixXd& R) mutable {
+        const bool fresh = std::exchange(first, false);
+        return fresh ? solver.solve_fresh(K, R) : solver.solve_with_last_factor(R);
     };
+}
+
+/// The lagged solve of the step-th of a sequence of nearby saddle points with K and m
+/// constraints against the direct Schur complement, to `tol`.
+void expect_lagged_matches_direct(LaggedSchurComplement& lagged, const SparseMatrix& K,
+                                  Factorization kind, int m, int step, double tol) {
+    const int n = static_cast<int>(K.rows());
     const Eigen::VectorXd f = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+    const Eigen::SparseMatrix<double> B = overlapping_columns(n, m, 0.01 * step);
+    const Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(m, 0.5 + step, -0.5);
+    SparseDirectSolver solver(kind);
+    auto solve = factor_once(solver, K);
+    Eigen::VectorXd p, p_direct;
+    const Eigen::VectorXd y = lagged.solve(solve, B, f, g, p);
+    const Eigen::VectorXd y_direct = schur_complement_solve(solve, B, f, g, p_direct);
+    EXPECT_LT((y - y_direct).norm(), tol * y_direct.norm()) << m << " step " << step;
+    EXPECT_LT((p - p_direct).norm(), tol * p_direct.norm()) << m << " step " << step;
+    EXPECT_LT((B.transpose() * y - g).norm(), tol * g.norm()) << m << " step " << step;
+}
+
+TEST(Solvers, LaggedSchurComplementMatchesTheDirectSolveAndMakesSOnce) {
+    const SparseMatrix K = shifted_laplacian(1200, 0.05, 0.02);
     for (int m : {130, 20}) {
         LaggedSchurComplement lagged;
-        for (int step = 0; step < 4; ++step) {
-            const Eigen::SparseMatrix<double> B = columns(m, 0.01 * step);
-            const Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(m, 0.5 + step, -0.5);
-            SparseDirectSolver solver(Factorization::Cholesky);
-            auto solve = [&, first = true](const Eigen::MatrixXd& R) mutable {
-                const bool fresh = std::exchange(first, false);
-                return fresh ? solver.solve_fresh(K, R) : solver.solve_with_last_factor(R);
-            };
-            Eigen::VectorXd p, p_direct;
-            const Eigen::VectorXd y = lagged.solve(solve, B, f, g, p);
-            const Eigen::VectorXd y_direct = schur_complement_solve(solve, B, f, g, p_direct);
-            EXPECT_LT((y - y_direct).norm(), 1e-10 * y_direct.norm()) << m << " step " << step;
-            EXPECT_LT((p - p_direct).norm(), 1e-10 * p_direct.norm()) << m << " step " << step;
-            EXPECT_LT((B.transpose() * y - g).norm(), 1e-10 * g.norm()) << m << " step " << step;
-        }
+        for (int step = 0; step < 4; ++step)
+            expect_lagged_matches_direct(lagged, K, Factorization::Cholesky, m, step, 1e-10);
         EXPECT_EQ(lagged.fresh_matrices(), m >= LaggedSchurComplement::kMinColumns ? 1 : 4) << m;
         EXPECT_EQ(lagged.iterations() > 0, m >= LaggedSchurComplement::kMinColumns) << m;
     }
@@ -269,29 +282,10 @@ TEST(Solvers, LaggedSchurComplementMatchesTheDirectSolveAndMakesSOnce) {
 // Indefinite K (Newton's steps of minimize): the lagged S preconditions GMRES instead of CG,
 // made once for nearby systems, and the solves match the direct Schur complement.
 TEST(Solvers, IndefiniteLaggedSchurComplementIteratesWithGmres) {
-    const int n = 1200, m = 130;
-    const SparseMatrix K = shifted_laplacian(n, -0.3, 0.02); // eigenvalues of both signs
-    const Eigen::VectorXd f = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+    const SparseMatrix K = shifted_laplacian(1200, -0.3, 0.02); // eigenvalues of both signs
     LaggedSchurComplement lagged(false);
-    for (int step = 0; step < 3; ++step) {
-        std::vector<Eigen::Triplet<double>> t;
-        for (int j = 0; j < m; ++j)
-            for (int i = 9 * j; i < 9 * j + 12 && i < n; ++i)
-                t.emplace_back(i, j, std::cos(i + 3.0 * j + 0.01 * step));
-        Eigen::SparseMatrix<double> B(n, m);
-        B.setFromTriplets(t.begin(), t.end());
-        const Eigen::VectorXd g = Eigen::VectorXd::LinSpaced(m, 0.5 + step, -0.5);
-        SparseDirectSolver solver(Factorization::LU);
-        auto solve = [&, first = true](const Eigen::MatrixXd& R) mutable {
-            const bool fresh = std::exchange(first, false);
-            return fresh ? solver.solve_fresh(K, R) : solver.solve_with_last_factor(R);
-        };
-        Eigen::VectorXd p, p_direct;
-        const Eigen::VectorXd y = lagged.solve(solve, B, f, g, p);
-        const Eigen::VectorXd y_direct = schur_complement_solve(solve, B, f, g, p_direct);
-        EXPECT_LT((y - y_direct).norm(), 1e-7 * y_direct.norm()) << "step " << step;
-        EXPECT_LT((p - p_direct).norm(), 1e-7 * p_direct.norm()) << "step " << step;
-    }
+    for (int step = 0; step < 3; ++step)
+        expect_lagged_matches_direct(lagged, K, Factorization::LU, 130, step, 1e-7);
     EXPECT_EQ(lagged.fresh_matrices(), 1);
     EXPECT_GT(lagged.iterations(), 0);
 }
