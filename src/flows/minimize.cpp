@@ -298,13 +298,14 @@ class Minimizer {
     }
 
     /// Newton's step (hessian_step.h) where MinimizeOptions::hessian asks for it and the
-    /// residual is below hessian_below: tried with mu_, ten times larger after each failure
-    /// (the merit rises, a facet angle halves, the system is singular) up to kHessianTries
-    /// times; then none for 10, 20, 40, ... iterations. False: the cluster unchanged.
+    /// residual is below hessian_below: tried with the carried mu (MinimizeCarry), ten times
+    /// larger after each failure (the merit rises, a facet angle halves, the system is
+    /// singular) up to kHessianTries times; then none for 10, 20, 40, ... iterations, counted
+    /// across the rounds. False: the cluster unchanged.
     bool try_hessian_step(const PositionBasis& P, const PairGeometry& g, const Variation& d,
                           const std::vector<double>& V, const EquilibriumState& s) {
         if (!hessian_ || s.residual > o_.hessian_below) return false;
-        if (hessian_pause_ > 0) return --hessian_pause_, false;
+        if (carry_.newton_pause > 0) return --carry_.newton_pause, false;
         const int nc = c_.n_volume_constraints();
         // with many bodies the first Newton step waits for a plain one, whose S it borrows
         if (nc >= LaggedSchurComplement::kMinColumns && !carry_.newton_schur.has_lagged() &&
@@ -314,11 +315,12 @@ class Minimizer {
         for (int b = 0; b < nc; ++b)
             dV[b] = c_.target_volumes()[b] - V[b];
         const std::vector<double> p(s.pressures.begin(), s.pressures.begin() + nc);
-        for (int k = 0; k < kHessianTries; ++k, mu_ *= 10) {
+        double& mu = carry_.newton_mu;
+        for (int k = 0; k < kHessianTries; ++k, mu *= 10) {
             HessianStep step;
             try {
                 carry_.newton_schur.borrow(carry_.schur);
-                step = hessian_step(c_, P, g, p, dV, mu_, carry_.newton_schur);
+                step = hessian_step(c_, P, g, p, dV, mu, carry_.newton_schur);
             } catch (const SolverError&) {
                 continue;
             }
@@ -330,7 +332,7 @@ class Minimizer {
             if (acceptable(step.X, merit, bound) &&
                 min_facet_angle(step.X) >= kAngleKept * min_facet_angle(c_.positions())) {
                 c_.set_positions(std::move(step.X));
-                mu_ = std::max(mu_ / 10, kMinMu);
+                mu = std::max(mu / 10, kMinMu);
                 anderson_.reset();
                 return true;
             }
@@ -338,8 +340,8 @@ class Minimizer {
         // a mesh whose second variation misleads Newton (slivers, junctions tangled below the
         // mesh's scale) fails again: each failure doubles the pause (the 1000-cell foam's four
         // tries, each with a fresh Schur complement, cost 7 minutes)
-        hessian_pause_ = next_pause_;
-        next_pause_ *= 2;
+        carry_.newton_pause = carry_.newton_next_pause;
+        carry_.newton_next_pause *= 2;
         return false;
     }
 
@@ -484,8 +486,6 @@ class Minimizer {
     static constexpr int kHessianTries = 4;
     static constexpr double kMinMu = 1e-6; ///< relative to sigma_mean / R^2 (hessian_step.h)
     bool hessian_ = false;
-    double mu_ = 1e-3;
-    int hessian_pause_ = 0, next_pause_ = 10;
     double initial_area_ = 0;
     int steps_on_factor_ = 0;
     int angle_retries_ = 0; // steps in a row refused for collapsing a facet

@@ -68,13 +68,18 @@ struct MinimizeOptions {
 
 /// What one minimize() hands to the next on the same bodies (minimize_with_transitions'
 /// rounds): the Schur complements that precondition the constraint solves of a cluster of many
-/// bodies (solvers/schur_complement.h), the plain steps' and Newton's, and the energies after the
+/// bodies (solvers/schur_complement.h), the plain steps' and Newton's, the energies after the
 /// last accepted steps (for MinimizeOptions::settle, across the rounds and the transitions between
-/// them).
+/// them), and Newton's damping and back-off, so that a round does not retry at once what failed
+/// in the last.
 struct MinimizeCarry {
     LaggedSchurComplement schur;
     LaggedSchurComplement newton_schur{false}; ///< Newton's steps' (indefinite)
     std::vector<double> energies; ///< the last settle_window + 1 at most, oldest first
+    /// Newton's damping (relative to sigma_mean / R^2), the iterations left before Newton is
+    /// tried again, and the pause after its next failure (doubling with each).
+    double newton_mu = 1e-3;
+    int newton_pause = 0, newton_next_pause = 10;
 };
 
 struct MinimizeResult {
