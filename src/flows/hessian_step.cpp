@@ -36,20 +36,18 @@ struct NormalUnknowns {
     Eigen::VectorXd mass;
 };
 
-NormalUnknowns normal_unknowns(const Cluster& c, const PositionBasis& P, const PairGeometry& g) {
+NormalUnknowns normal_unknowns(const Cluster& c, const PositionBasis& P, const PairGeometry& g,
+                               const Eigen::VectorXd& vertex_mass) {
     std::vector<Eigen::Triplet<double>> t;
     std::vector<double> mass;
     for (int v = 0; v < c.n_vertices(); ++v) {
         const Eigen::MatrixXd Q = normal_basis(c, P, g, v);
         if (Q.size() == 0) continue;
         const Eigen::MatrixXd B = P.T(v).leftCols(P.dim(v)) * Q;
-        double m = 0;
-        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
-            m += g.mass[k];
         for (Eigen::Index j = 0; j < B.cols(); ++j) {
             for (int i = 0; i < 3; ++i)
                 t.emplace_back(3 * v + i, static_cast<int>(mass.size()), B(i, j));
-            mass.push_back(m);
+            mass.push_back(vertex_mass[v]);
         }
     }
     NormalUnknowns u;
@@ -65,14 +63,13 @@ HessianStep hessian_step(const Cluster& c, const PositionBasis& P, const PairGeo
                          const std::vector<double>& pressures, const Eigen::VectorXd& dV, double mu,
                          LaggedSchurComplement& schur) {
     const std::vector<Vec3>& X = c.positions();
-    const NormalUnknowns u = normal_unknowns(c, P, g);
+    const Eigen::VectorXd vertex_mass = vertex_masses(c, g);
+    const NormalUnknowns u = normal_unknowns(c, P, g, vertex_mass);
     const SparseMatrix Nt = u.N.transpose();
     const Eigen::VectorXd f = -(Nt * apply_stiffness(c, X));
     const SparseMatrix G =
         Nt * sparse_body_volume_gradients(c, X).leftCols(c.n_volume_constraints());
-    double total_area = 0;
-    for (double a : surface_areas(c))
-        total_area += a;
+    const double total_area = vertex_mass.sum();
     const double sigma_mean = energy(c) / total_area, R2 = total_area / (4 * M_PI);
     // mu M as a sparse diagonal: coeffRef would insert where N^T H N has no diagonal entry
     std::vector<Eigen::Triplet<double>> damping;

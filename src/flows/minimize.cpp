@@ -60,12 +60,11 @@ Variation first_variation(const Cluster& c, const PositionBasis& P, const PairGe
     d.grad_volume = P.restrict(sparse_body_volume_gradients(c, c.positions()))
                         .leftCols(c.n_volume_constraints());
     d.bodies = c.n_bodies();
+    const Eigen::VectorXd m = vertex_masses(c, g);
     d.weight.resize(P.size());
     for (int v = 0; v < c.n_vertices(); ++v) {
-        double m = 0;
-        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k) m += g.mass[k];
-        d.weight.segment(P.offset(v), P.dim(v)).setConstant(1.0 / m);
-        d.area += m;
+        d.weight.segment(P.offset(v), P.dim(v)).setConstant(1.0 / m[v]);
+        d.area += m[v];
     }
     d.energy = energy(c);
     return d;
@@ -253,7 +252,7 @@ class Minimizer {
                                     " of their area (nothing holds them: no body, no wall)";
                     break;
                 }
-                if (settled(r)) break;
+                if (o_.settle > 0 && settled(r)) break;
                 const double angle = min_facet_angle(c_.positions());
                 if (angle < std::min(kDegenerateAngle, 0.5 * start_angle)) {
                     r.stop_reason = "topology: a facet angle fell to " + fmt(angle) +
@@ -288,7 +287,7 @@ class Minimizer {
         E.push_back(energy(c_));
         const std::size_t n = static_cast<std::size_t>(o_.settle_window) + 1;
         if (E.size() > n) E.erase(E.begin(), E.end() - static_cast<std::ptrdiff_t>(n));
-        if (o_.settle <= 0 || E.size() < n) return false;
+        if (E.size() < n) return false;
         // a rise (a transition's or the upkeep's between rounds) is no more settled than a fall
         const double drop = (E.front() - E.back()) / std::abs(E.back());
         if (!(std::abs(drop) <= o_.settle)) return false;
@@ -307,19 +306,12 @@ class Minimizer {
         if (!hessian_ || s.residual > o_.hessian_below) return false;
         if (carry_.newton_pause > 0) return --carry_.newton_pause, false;
         const int nc = c_.n_volume_constraints();
-        // with many bodies the first Newton step waits for a plain one, whose S it borrows
-        if (nc >= LaggedSchurComplement::kMinColumns && !carry_.newton_schur.has_lagged() &&
-            !carry_.schur.has_lagged())
-            return false;
-        Eigen::VectorXd dV(nc);
-        for (int b = 0; b < nc; ++b)
-            dV[b] = c_.target_volumes()[b] - V[b];
+        const Eigen::VectorXd dV = volume_defects(V);
         const std::vector<double> p(s.pressures.begin(), s.pressures.begin() + nc);
         double& mu = carry_.newton_mu;
         for (int k = 0; k < kHessianTries; ++k, mu *= 10) {
             HessianStep step;
             try {
-                carry_.newton_schur.borrow(carry_.schur);
                 step = hessian_step(c_, P, g, p, dV, mu, carry_.newton_schur);
             } catch (const SolverError&) {
                 continue;
@@ -370,8 +362,7 @@ class Minimizer {
             steps_on_factor_ = 0, has_factor_ = true;
         }
         ++steps_on_factor_;
-        Eigen::VectorXd dV(c_.n_volume_constraints());
-        for (int b = 0; b < c_.n_volume_constraints(); ++b) dV[b] = c_.target_volumes()[b] - V[b];
+        const Eigen::VectorXd dV = volume_defects(V);
         Eigen::VectorXd p;
         const Eigen::VectorXd y = constrained_step(system_, fresh, carry_.schur, d, dV, p);
         std::vector<Vec3> X = c_.positions();
@@ -455,6 +446,14 @@ class Minimizer {
                         best_cot = cot, sine = sn, cosine = cs;
                 }
         return std::atan2(sine, cosine) * 180 / M_PI;
+    }
+
+    /// V*_b - V_b for the volume constraints (Cluster::n_volume_constraints).
+    Eigen::VectorXd volume_defects(const std::vector<double>& V) const {
+        Eigen::VectorXd dV(c_.n_volume_constraints());
+        for (int b = 0; b < dV.size(); ++b)
+            dV[b] = c_.target_volumes()[b] - V[b];
+        return dV;
     }
 
     /// The merit of a step: the Lagrangian E - p . (V - V*) at X with the step's multipliers

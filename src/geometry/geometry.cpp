@@ -113,6 +113,14 @@ PairGeometry pair_geometry(const Cluster& c) {
     return g;
 }
 
+Eigen::VectorXd vertex_masses(const Cluster& c, const PairGeometry& g) {
+    Eigen::VectorXd m = Eigen::VectorXd::Zero(c.n_vertices());
+    for (int v = 0; v < c.n_vertices(); ++v)
+        for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
+            m[v] += g.mass[k];
+    return m;
+}
+
 MeshQuality mesh_quality(const Cluster& c) {
     const auto& X = c.positions();
     MeshQuality q;

@@ -71,6 +71,9 @@ struct PairGeometry {
     std::vector<double> mass_beta;
 };
 PairGeometry pair_geometry(const Cluster& c);
+/// m_v = sum_i m_iv over the surfaces at v: the lumped mass of each vertex (its entries sum to
+/// the total film area).
+Eigen::VectorXd vertex_masses(const Cluster& c, const PairGeometry& g);
 
 struct AngleStats {
     double min = 0, max = 0, mean = 0; ///< degrees

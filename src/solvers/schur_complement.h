@@ -70,9 +70,9 @@ class LaggedSchurComplement {
     }
     /// The CG stops at this residual relative to g - B^T u: the direct solve's accuracy.
     static constexpr double kTolerance = 1e-13;
-    /// GMRES (indefinite K: Newton's steps, whose LU solves are less accurate and whose
-    /// result is only a proposal that the merit test decides on) stops at this one.
-    static constexpr double kNewtonTolerance = 1e-10;
+    /// GMRES (indefinite K, such as that of minimize's Newton steps, whose LU solves are less
+    /// accurate and whose result is only a proposal a merit test decides on) stops at this one.
+    static constexpr double kIndefiniteTolerance = 1e-10;
 
     /// As schur_complement_solve.
     template <class Solve>
@@ -97,15 +97,8 @@ class LaggedSchurComplement {
     }
 
     void reset() { lagged_ = Eigen::PartialPivLU<Eigen::MatrixXd>(); }
-    /// Until it makes its own, the preconditioner is `other`'s lagged S (of the same
-    /// constraints): Newton's steps of minimize start from the plain steps' S, which spares
-    /// them the n_bodies solves of a first S of their own.
-    void borrow(const LaggedSchurComplement& other) {
-        if (!has_lagged()) lagged_ = other.lagged_;
-    }
-    bool has_lagged() const { return lagged_.rows() > 0; }
     int fresh_matrices() const { return fresh_; }  ///< times S was made
-    int iterations() const { return iterations_; } ///< CG iterations in all
+    int iterations() const { return iterations_; } ///< CG (or GMRES) iterations in all
 
   private:
     /// S p = r0 by CG preconditioned with the lagged S; false if it did not converge.
@@ -145,7 +138,7 @@ class LaggedSchurComplement {
         const auto apply_P = [&](const Eigen::VectorXd& r) -> Eigen::VectorXd {
             return lagged_.solve(r);
         };
-        const int it = detail::gmres(apply_S, apply_P, r0, p, kNewtonTolerance * r0.norm(),
+        const int it = detail::gmres(apply_S, apply_P, r0, p, kIndefiniteTolerance * r0.norm(),
                                      max_iterations(r0.size()));
         if (it > 0) iterations_ += it;
         return it >= 0;
