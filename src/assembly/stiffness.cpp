@@ -80,6 +80,16 @@ void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const st
     M.finish();
 }
 
+Eigen::VectorXd stiffness_diagonal(const Cluster& c) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(c.n_vertices());
+    for_each_facet(c, [&](int i, const Tri& t, const Eigen::Matrix3d& K) {
+        const double w = isotropic_weight(c.surface(i));
+        for (int a = 0; a < 3; ++a)
+            d[t[a]] += w * K(a, a);
+    });
+    return d;
+}
+
 void assemble_scalar_stiffness(const Cluster& c, const Eigen::VectorXd& diagonal,
                                SparseBuilder& M) {
     M.begin(c.n_vertices(), c.n_vertices());

@@ -39,6 +39,11 @@ Eigen::VectorXd apply_stiffness_to_motion(const Cluster& c, const std::vector<Ve
 void assemble_weight_jacobian(const Cluster& c, const PositionBasis& P, const std::vector<Vec3>& X,
                               int size, SparseBuilder& M);
 
+/// The diagonal of the scalar P1 stiffness of all surfaces, sum_i w_i K_i (w_i the isotropic
+/// tension, the anisotropic surfaces' scale too): one entry per vertex, about 3.5 sigma at an
+/// inner vertex of a film of equilateral facets whatever their size.
+Eigen::VectorXd stiffness_diagonal(const Cluster& c);
+
 /// The scalar P1 stiffness of all surfaces, sum_i w_i K_i with w_i the isotropic tension, plus
 /// diag(diagonal) (one entry per vertex): n_vertices x n_vertices. For an isotropic cluster
 /// without walls A = this (x) I_3, so a system with a proximal term of the full lumped mass

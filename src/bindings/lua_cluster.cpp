@@ -310,6 +310,13 @@ SaddleSolver read_sd_solver(Options& o) {
     return parse_saddle_solver(name);
 }
 
+/// line_relaxation = t_r (TimeStepper::set_line_relaxation).
+double read_line_relaxation(Options& o) {
+    const double t = o.number("line_relaxation", 0.0);
+    if (!(std::isfinite(t) && t >= 0)) o.error("line_relaxation", "must be a finite time >= 0");
+    return t;
+}
+
 int l_step(lua_State* L) {
     ClusterHandle& h = self(L);
     ChangeGuard change(L, h, "step");
@@ -320,6 +327,7 @@ int l_step(lua_State* L) {
     const bool exact = o.boolean("exact_volumes", true);
     const long long order = o.integer("order", 1);
     if (order != 1 && order != 2) o.error("order", "must be 1 or 2");
+    const double line_relaxation = read_line_relaxation(o);
     const SaddleSolver sd_solver = read_sd_solver(o);
     const FixedPointOptions fp = read_fixed_point(L, o, "step: fixed_point");
     o.finish();
@@ -327,6 +335,7 @@ int l_step(lua_State* L) {
         h.stepper.set_fixed_point(fp);
         h.stepper.set_exact_volumes(exact);
         h.stepper.set_order(static_cast<int>(order));
+        h.stepper.set_line_relaxation(line_relaxation);
         h.stepper.set_sd_solver(sd_solver);
         const StepReport r = h.stepper.step(h.cluster, parse_flow(flow), tau, project);
         push_step_report(L, r);
@@ -401,6 +410,7 @@ EvolveOptions read_evolve_options(lua_State* L, Options& o) {
     const long long order = o.integer("order", 1);
     if (order != 1 && order != 2) o.error("order", "must be 1 or 2");
     e.order = static_cast<int>(order);
+    e.line_relaxation = read_line_relaxation(o);
     e.sd_solver = read_sd_solver(o);
     const bool progress = o.boolean("progress", isatty(STDOUT_FILENO));
     e.progress = progress && isatty(STDOUT_FILENO) ? stdout : nullptr;

@@ -84,6 +84,12 @@ void TimeStepper::set_order(int order) {
     order_ = order;
 }
 
+void TimeStepper::set_line_relaxation(double time) {
+    if (!(std::isfinite(time) && time >= 0))
+        throw InvalidInput("step: line_relaxation must be a finite time >= 0, got " + fmt(time));
+    line_relaxation_ = time;
+}
+
 bool TimeStepper::continues_previous(const Cluster& c, Flow flow) const {
     return order_ == 2 && !previous_.end.empty() && previous_.flow == flow &&
            previous_.revision == c.materials_revision() && previous_.end == c.positions();
@@ -97,10 +103,12 @@ void TimeStepper::drop_factorizations() {
 Scheme& TimeStepper::scheme(Flow flow) {
     if (flow == Flow::MeanCurvature) {
         if (!mcf_) mcf_ = std::make_unique<MeanCurvatureScheme>();
+        mcf_->set_line_relaxation(line_relaxation_);
         return *mcf_;
     }
     if (!sd_) sd_ = std::make_unique<SurfaceDiffusionScheme>(exact_volumes_);
     sd_->set_exact_volumes(exact_volumes_);
+    sd_->set_line_relaxation(line_relaxation_);
     sd_->set_saddle_solver(sd_solver_);
     return *sd_;
 }

@@ -89,6 +89,12 @@ class TimeStepper {
     /// \throw InvalidInput for another order.
     void set_order(int order);
     int order() const { return order_; }
+    /// The line relaxation time of the steps (Scheme::set_line_relaxation; numerics.md "Line
+    /// vertices along their lines"): 0, the default, is the seed's schemes, whose triple-line
+    /// vertices settle along their lines within each step however short it is.
+    /// \throw InvalidInput unless finite and >= 0.
+    void set_line_relaxation(double time);
+    double line_relaxation() const { return line_relaxation_; }
 
   private:
     StepReport step_once(Cluster& c, Flow flow, double tau, bool project_onto_walls,
@@ -112,6 +118,7 @@ class TimeStepper {
     bool exact_volumes_ = true;
     SaddleSolver sd_solver_ = SaddleSolver::Auto;
     int order_ = 1;
+    double line_relaxation_ = 0;
     Previous previous_;
     std::unique_ptr<MeanCurvatureScheme> mcf_;
     std::unique_ptr<SurfaceDiffusionScheme> sd_;

@@ -1,5 +1,7 @@
 #include "geometry/geometry.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -119,6 +121,16 @@ Eigen::VectorXd vertex_masses(const Cluster& c, const PairGeometry& g) {
         for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
             m[v] += g.mass[k];
     return m;
+}
+
+Vec3 line_direction(const Cluster& c, const PairGeometry& g, int v) {
+    const int surfaces = c.pair_begin(v + 1) - c.pair_begin(v);
+    if (surfaces < 2 || surfaces > 3) return Vec3::Zero();
+    Eigen::Matrix3d B = Eigen::Matrix3d::Zero();
+    for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
+        B += g.mass[k] * g.omega[k] * g.omega[k].transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(B); // eigenvalues increasing
+    return eig.eigenvectors().col(0);
 }
 
 MeshQuality mesh_quality(const Cluster& c) {

@@ -74,6 +74,11 @@ PairGeometry pair_geometry(const Cluster& c);
 /// m_v = sum_i m_iv over the surfaces at v: the lumped mass of each vertex (its entries sum to
 /// the total film area).
 Eigen::VectorXd vertex_masses(const Cluster& c, const PairGeometry& g);
+/// The unit direction of the triple line through vertex v (either sign), zero at a film vertex
+/// or a quadruple point: the eigenvector of the smallest eigenvalue of sum_i m_iv omega_iv
+/// omega_iv^T, the direction the normals of the line's films leave free. (They are never
+/// exactly coplanar, so the line's direction is not their null space.)
+Vec3 line_direction(const Cluster& c, const PairGeometry& g, int v);
 
 struct AngleStats {
     double min = 0, max = 0, mean = 0; ///< degrees

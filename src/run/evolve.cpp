@@ -748,6 +748,7 @@ EvolveResult evolve(Cluster& c, TimeStepper& stepper, const EvolveOptions& o,
     check_options(o);
     stepper.set_fixed_point(o.fixed_point); // throws InvalidInput for bad values
     stepper.set_order(o.adaptive ? 2 : o.order); // the estimate is that of the order-2 step
+    stepper.set_line_relaxation(o.line_relaxation); // throws InvalidInput for bad values
     const EngineLoopScope polling; // Ctrl-C is served between steps, also inside on_step
     const auto start = Clock::now();
     Run run(c, stepper, o, memory);

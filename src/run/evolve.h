@@ -77,6 +77,9 @@ struct EvolveOptions {
     /// The order in time of the steps, 1 or 2 (TimeStepper::set_order; the first step of
     /// order 2 is of order 1).
     int order = 1;
+    /// The line relaxation time of the steps (TimeStepper::set_line_relaxation; 0: the
+    /// seed's schemes).
+    double line_relaxation = 0;
 };
 
 struct EvolveResult {

@@ -17,9 +17,11 @@
 
 namespace froth {
 
-/// The system (4.6b) of one step into M and rhs (also minimize's step, flows/minimize.h).
+/// The system (4.6b) of one step into M and rhs (also minimize's step, flows/minimize.h), with
+/// the line relaxation term of Scheme::set_line_relaxation for a time > 0.
 void assemble_mcf(const Cluster& c, const PairGeometry& g, const PositionBasis& P, double tau,
-                  const FacetNormals* lagged, SparseBuilder& M, Eigen::VectorXd& rhs);
+                  const FacetNormals* lagged, SparseBuilder& M, Eigen::VectorXd& rhs,
+                  double line_relaxation = 0);
 
 class MeanCurvatureScheme final : public Scheme {
   public:

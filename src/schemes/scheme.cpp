@@ -54,6 +54,28 @@ Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
     return x;
 }
 
+void add_line_relaxation(const Cluster& c, const PairGeometry& g, const PositionBasis& P,
+                         double weight, SparseBuilder& M) {
+    if (weight == 0 || c.junction_edges().empty()) return;
+    const Eigen::VectorXd k = stiffness_diagonal(c);
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        const Vec3 t = line_direction(c, g, v);
+        if (!t.isZero()) P.add_block(M, v, v, weight * k[v] * t * t.transpose());
+    }
+}
+
+void Scheme::add_line_relaxation_memory(const Cluster& c, const PairGeometry& g,
+                                        const PositionBasis& P, double tau) {
+    if (line_relaxation_ == 0 || c.junction_edges().empty()) return;
+    const Eigen::VectorXd k = stiffness_diagonal(c);
+    Eigen::VectorXd memory = Eigen::VectorXd::Zero(3 * c.n_vertices());
+    for (int v = 0; v < c.n_vertices(); ++v) {
+        const Vec3 t = line_direction(c, g, v);
+        memory.segment<3>(3 * v) = line_relaxation_ / tau * k[v] * t.dot(bdf2_->memory[v]) * t;
+    }
+    rhs_.head(P.size()) += P.restrict(memory);
+}
+
 std::vector<Vec3> displaced(const Cluster& c, const PositionBasis& P, const Eigen::VectorXd& z) {
     std::vector<Vec3> X = c.positions();
     for (int v = 0; v < c.n_vertices(); ++v)

@@ -92,6 +92,17 @@ class Scheme {
     Eigen::VectorXd solve_bdf2(const Cluster& c, const std::vector<Vec3>& previous,
                                double previous_tau, double tau, const PositionBasis& P,
                                StepCost& cost);
+    /// The line relaxation time t_r >= 0 of every step (0: the seed's schemes; numerics.md
+    /// "Line vertices along their lines"): each system gains t_r / tau k_v t_v t_v^T in the
+    /// position rows of every triple-line vertex v, t_v the line's direction there (geometry.h
+    /// line_direction) and k_v the stiffness diagonal (assembly/stiffness.h). A line vertex
+    /// then moves along its line at the velocity -t_v . (A X)_v / (t_r k_v) where the seed's
+    /// schemes let it settle anew within every step, however short.
+    /// Switching it on or off changes the systems' patterns, so their factorisations go.
+    void set_line_relaxation(double time) {
+        if ((time > 0) != (line_relaxation_ > 0)) drop_systems();
+        line_relaxation_ = time;
+    }
     /// Forgets the patterns, factorisations and history (the cluster's mesh was replaced).
     virtual void reset();
     /// Forgets the factorisations and patterns, not the history: the next step factorises
@@ -144,6 +155,12 @@ class Scheme {
     /// Set during an order-2 corrector (solve_corrector): assemble adds its shift term, and each
     /// scheme's assemble_system its memory term; null otherwise.
     const Bdf2Step* bdf2_ = nullptr;
+    /// The line relaxation time (set_line_relaxation).
+    double line_relaxation_ = 0;
+    /// Order 2 with line_relaxation_ > 0: its memory term t_r / tau k_v t_v t_v^T E_v (bdf2.h)
+    /// added to rhs_'s position rows; tau is the corrector's tau' = tau / a.
+    void add_line_relaxation_memory(const Cluster& c, const PairGeometry& g, const PositionBasis& P,
+                                    double tau);
 
   private:
     // r > 1: the weight derivative of Newton's method and the (unsymmetric) Jacobian's solver.
@@ -157,6 +174,12 @@ class Scheme {
 Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
                               const Eigen::VectorXd& b, double tau, StepCost& cost,
                               double tolerance = 1e-15);
+
+/// Adds `weight` k_v t_v t_v^T to the position block of every triple-line vertex v (t_v
+/// geometry.h line_direction, k_v assembly/stiffness.h stiffness_diagonal): the term of
+/// Scheme::set_line_relaxation, weight = t_r / tau. Nothing for weight 0.
+void add_line_relaxation(const Cluster& c, const PairGeometry& g, const PositionBasis& P,
+                         double weight, SparseBuilder& M);
 
 /// X^m + T z: the positions of a solution z of a step's system.
 std::vector<Vec3> displaced(const Cluster& c, const PositionBasis& P, const Eigen::VectorXd& z);

@@ -11,10 +11,11 @@ namespace froth {
 
 void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
                  const PositionBasis& P, double tau, const FacetNormals* lagged, SparseBuilder& M,
-                 Eigen::VectorXd& rhs) {
+                 Eigen::VectorXd& rhs, double line_relaxation) {
     const int n = P.size(), size = n + Z.n_reduced;
     M.begin(size, size);
     add_position_stiffness(c, P, lagged, M);
+    add_line_relaxation(c, g, P, line_relaxation / tau, M);
     // -tau Z^T A_beta Z: the scalar stiffness of each surface, weighted by beta_i(nu_sigma), on
     // its kappa pairs, through Z. (3.8a)
     std::vector<int> facet(c.n_surfaces(), 0);
@@ -105,7 +106,7 @@ void SurfaceDiffusionScheme::assemble_system(const Cluster& c, const PairGeometr
                                              const PositionBasis& P, double tau,
                                              const FacetNormals* lagged) {
     if (!Z_) Z_ = std::make_shared<const KappaBasis>(kappa_basis(c));
-    assemble_sd(c, g, *Z_, P, tau, lagged, matrix_, rhs_);
+    assemble_sd(c, g, *Z_, P, tau, lagged, matrix_, rhs_, line_relaxation_);
     for (SparseDirectSolver* s : {&solver_, &exact_solver_})
         s->set_saddle_point(P.size(), saddle_solver_);
     if (kappa_rhs_) add_kappa_rhs(*Z_, *kappa_rhs_, P.size(), rhs_);
@@ -115,6 +116,7 @@ void SurfaceDiffusionScheme::assemble_system(const Cluster& c, const PairGeometr
             for (int k = c.pair_begin(v); k < c.pair_begin(v + 1); ++k)
                 memory[k] = g.mass[k] * g.omega[k].dot(bdf2_->memory[v]);
         add_kappa_rhs(*Z_, memory, P.size(), rhs_);
+        add_line_relaxation_memory(c, g, P, tau);
     }
 }
 

@@ -24,10 +24,11 @@
 
 namespace froth {
 
-/// The saddle point of one step into M and rhs (positions first, then k).
+/// The saddle point of one step into M and rhs (positions first, then k), with the line
+/// relaxation term of Scheme::set_line_relaxation in the position block for a time > 0.
 void assemble_sd(const Cluster& c, const PairGeometry& g, const KappaBasis& Z,
                  const PositionBasis& P, double tau, const FacetNormals* lagged, SparseBuilder& M,
-                 Eigen::VectorXd& rhs);
+                 Eigen::VectorXd& rhs, double line_relaxation = 0);
 
 class SurfaceDiffusionScheme final : public Scheme {
   public:
