@@ -29,7 +29,7 @@ TimeStepper::~TimeStepper() = default;
 
 TimeStepper::TimeStepper(const TimeStepper& o)
     : fixed_point_(o.fixed_point_), exact_volumes_(o.exact_volumes_), sd_solver_(o.sd_solver_),
-      order_(o.order_),
+      order_(o.order_), line_relaxation_(o.line_relaxation_),
       previous_(o.previous_), mcf_(o.mcf_ ? std::make_unique<MeanCurvatureScheme>(*o.mcf_) : nullptr),
       sd_(o.sd_ ? std::make_unique<SurfaceDiffusionScheme>(*o.sd_) : nullptr) {}
 
