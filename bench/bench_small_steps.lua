@@ -9,7 +9,7 @@
 -- fixed_t: the double bubble froth.double_bubble{h} evolved by surface diffusion and by MCF
 --   to t = T with each tau of `taus`: the smallest facet angle and the energy at T, and where
 --   the smallest angle is (a facet with how many triple-line vertices).
--- quad (not in the default cases; 8 minutes): froth.quadruple_bubble{vertices = 2500} by
+-- quad (not in the default cases; 3.5 minutes): froth.quadruple_bubble{vertices = 2500} by
 --   surface diffusion (exact_volumes = false, tau = 1e-4 after a ramp from 1e-8, as
 --   datafiles/quadruple_bubble.lua) to t = 0.1 with evolve's defaults, for line_relaxation =
 --   0, 1e-5, 1e-4, 1e-3: the smallest angle at the end.
