@@ -54,25 +54,36 @@ Eigen::VectorXd solve_checked(SparseDirectSolver& solver, const SparseMatrix& M,
     return x;
 }
 
-void add_line_relaxation(const Cluster& c, const PairGeometry& g, const PositionBasis& P,
-                         double weight, SparseBuilder& M) {
-    if (weight == 0 || c.junction_edges().empty()) return;
+namespace {
+
+/// Calls f(v, k_v t_v t_v^T) at every triple-line vertex v: the line relaxation term's block
+/// per unit weight (Scheme::set_line_relaxation).
+template <class F> void for_each_line_block(const Cluster& c, const PairGeometry& g, F&& f) {
+    if (c.junction_edges().empty()) return;
     const Eigen::VectorXd k = stiffness_diagonal(c);
     for (int v = 0; v < c.n_vertices(); ++v) {
         const Vec3 t = line_direction(c, g, v);
-        if (!t.isZero()) P.add_block(M, v, v, weight * k[v] * t * t.transpose());
+        if (!t.isZero()) f(v, Eigen::Matrix3d(k[v] * t * t.transpose()));
     }
+}
+
+} // namespace
+
+void add_line_relaxation(const Cluster& c, const PairGeometry& g, const PositionBasis& P,
+                         double weight, SparseBuilder& M) {
+    if (weight == 0) return;
+    for_each_line_block(c, g, [&](int v, const Eigen::Matrix3d& B) {
+        P.add_block(M, v, v, weight * B);
+    });
 }
 
 void Scheme::add_line_relaxation_memory(const Cluster& c, const PairGeometry& g,
                                         const PositionBasis& P, double tau) {
-    if (line_relaxation_ == 0 || c.junction_edges().empty()) return;
-    const Eigen::VectorXd k = stiffness_diagonal(c);
+    if (line_relaxation_ == 0) return;
     Eigen::VectorXd memory = Eigen::VectorXd::Zero(3 * c.n_vertices());
-    for (int v = 0; v < c.n_vertices(); ++v) {
-        const Vec3 t = line_direction(c, g, v);
-        memory.segment<3>(3 * v) = line_relaxation_ / tau * k[v] * t.dot(bdf2_->memory[v]) * t;
-    }
+    for_each_line_block(c, g, [&](int v, const Eigen::Matrix3d& B) {
+        memory.segment<3>(3 * v) = line_relaxation_ / tau * (B * bdf2_->memory[v]);
+    });
     rhs_.head(P.size()) += P.restrict(memory);
 }
 
